@@ -1,0 +1,61 @@
+# SMA coupling sleeves (Pagano, Alart, Lebon 1998): FreeFEM scenes with a C++ load plugin.
+#   make run  [SCENE=<scene>] [ARGS='-name value ...']   install, build, run a scene, draw its figures
+#   make test                                            install, build, pass every test (ctest)
+SHELL := /bin/bash
+.DEFAULT_GOAL := run
+
+SCENES := $(sort $(basename $(notdir $(wildcard edp/scenes/*.edp))))
+SCENE ?= beam
+ARGS ?=
+PYTHON := /usr/bin/python3
+FF := tools/ff
+
+PLUGIN := plugin/build/sma.so
+PLUGIN_SOURCES := plugin/sma.cpp $(wildcard plugin/core/*.hpp)
+
+# gmsh meshes (MSH 2.2: FreeFEM's gmshload does not read MSH 4). lc per level: meshes/beam.geo.
+BEAM_MESHES := meshes/beam-coarse.msh meshes/beam-medium.msh meshes/beam-fine.msh
+MESHES := $(BEAM_MESHES)
+lc_coarse := 0.0021
+lc_medium := 0.00125
+lc_fine := 0.0007
+
+.PHONY: run test deps plugin meshes clean check-scene
+
+deps:
+	@tools/install-deps.sh
+
+plugin: deps $(PLUGIN)
+$(PLUGIN): $(PLUGIN_SOURCES)
+	@mkdir -p plugin/build
+	@cd plugin/build && ff-c++ ../sma.cpp -I/usr/include/eigen3 -I.. > build.log 2>&1 \
+	  || { cat build.log; echo "error: building the plugin failed (plugin/build/build.log)" >&2; exit 1; }
+	@test -f $(PLUGIN) || { cat plugin/build/build.log; echo "error: ff-c++ made no $(PLUGIN)" >&2; exit 1; }
+	@echo "built $(PLUGIN)"
+
+meshes: deps $(MESHES)
+meshes/beam-%.msh: meshes/beam.geo
+	@gmsh -2 -format msh22 -setnumber lc $(lc_$*) $< -o $@ > $@.log 2>&1 \
+	  || { cat $@.log; echo "error: gmsh failed on $<" >&2; exit 1; }
+	@rm -f $@.log
+
+check-scene:
+	@if [[ ! "$(SCENE)" =~ ^[A-Za-z0-9_-]+$$ ]]; then \
+	  echo "error: SCENE='$(SCENE)' is not a scene name (letters, digits, - and _ only)" >&2; \
+	  echo "scenes: $(SCENES)" >&2; exit 2; fi
+	@if [[ " $(SCENES) " != *" $(SCENE) "* ]]; then \
+	  echo "error: unknown scene '$(SCENE)'" >&2; echo "scenes: $(SCENES)" >&2; exit 2; fi
+
+run: check-scene plugin meshes
+	$(FF) edp/scenes/$(SCENE).edp $(ARGS)
+	@if [ -f tools/plot_$(SCENE).py ]; then $(PYTHON) tools/plot_$(SCENE).py results/$(SCENE); fi
+	@echo "results in results/$(SCENE)/"
+
+test: plugin meshes
+	@mkdir -p build && cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > build/cmake.log 2>&1 || \
+	  { mkdir -p build; cmake -S . -B build -DCMAKE_BUILD_TYPE=Release; }
+	@cmake --build build -j2
+	@cd build && ctest --output-on-failure -j2
+
+clean:
+	rm -rf build plugin/build meshes/*.msh results

@@ -1,0 +1,74 @@
+// FreeFEM glue of the SMA plugin: converts FreeFEM arrays to spans and calls the core.
+// Everything numerical lives in plugin/core (tested without FreeFEM).
+//
+// Functions added to the FreeFEM language:
+//   long PhaseProject(real[] trace, real[] alpha, real[] c, real[] s, real[] phase)
+//       local DC step at every quadrature point; phase is in/out (previous -> new);
+//       returns the number of points whose phase changed.
+//   real AuchmutyLocal(real[] trace, real[] alpha, real[] c, real[] s, real[] weight)
+//       sum_i w_i (phi2*(s_i) - trace_i s_i), the sigma2 part of L_II [45].
+//   real SmaPluginVersion()  version stamp, checked by edp/lib/plugin.idp.
+//   real WallSeconds()       monotonic wall clock (s), for timings.
+
+#include <ff++.hpp>
+#include <AFunction_ext.hpp>
+
+#include <chrono>
+#include <exception>
+#include <string>
+
+#include "core/phase_projection.hpp"
+
+using namespace Fem2D;
+
+namespace {
+
+sma::span<double> view(KN<double>* a) { return {a->N() ? &(*a)[0] : nullptr, (std::size_t)a->N()}; }
+sma::span<const double> cview(KN<double>* a) {
+  return {a->N() ? &(*a)[0] : nullptr, (std::size_t)a->N()};
+}
+
+template <class F>
+auto guarded(const char* name, F f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const std::exception& e) {
+    ExecError((std::string(name) + ": " + e.what()).c_str());
+  }
+  return {};
+}
+
+long PhaseProject(KN<double>* const& trace, KN<double>* const& alpha, KN<double>* const& c,
+                  KN<double>* const& s, KN<double>* const& phase) {
+  return guarded("PhaseProject", [&] {
+    return (long)sma::project_phases(cview(trace), cview(alpha), cview(c), view(s), view(phase));
+  });
+}
+
+double AuchmutyLocal(KN<double>* const& trace, KN<double>* const& alpha, KN<double>* const& c,
+                     KN<double>* const& s, KN<double>* const& weight) {
+  return guarded("AuchmutyLocal", [&] {
+    return sma::auchmuty_local_part(cview(trace), cview(alpha), cview(c), cview(s), cview(weight));
+  });
+}
+
+double SmaPluginVersion() { return 1.0; }
+
+// FreeFEM's time() has a resolution of one second and clock() counts CPU time; timings of the
+// scenes are wall-clock seconds from a monotonic clock.
+double WallSeconds() {
+  using namespace std::chrono;
+  return duration<double>(steady_clock::now().time_since_epoch()).count();
+}
+
+}  // namespace
+
+static void Load_Init() {
+  typedef KN<double>* A;
+  Global.Add("PhaseProject", "(", new OneOperator5_<long, A, A, A, A, A>(PhaseProject));
+  Global.Add("AuchmutyLocal", "(", new OneOperator5_<double, A, A, A, A, A>(AuchmutyLocal));
+  Global.Add("SmaPluginVersion", "(", new OneOperator0<double>(SmaPluginVersion));
+  Global.Add("WallSeconds", "(", new OneOperator0<double>(WallSeconds));
+}
+
+LOADFUNC(Load_Init)

@@ -1,0 +1,36 @@
+#!/bin/sh
+# Installs what the project needs from Debian, only what is missing (idempotent), then writes
+# ./freefem++.pref so that a plain `FreeFem++ edp/scenes/<scene>.edp` run from the repository
+# root finds the stock plugins and .idp files: Debian's /etc/freefem++.pref points at
+# /usr/lib/ff++/4.9/..., which does not exist (the files are in /usr/lib/freefem++ and
+# /usr/include/freefem++/idp). tools/ff sets the same paths through FF_LOADPATH/FF_INCLUDEPATH.
+set -eu
+root=$(cd "$(dirname "$0")/.." && pwd)
+
+packages="freefem++ libfreefem++-dev gmsh libeigen3-dev libgtest-dev cmake make g++
+python3-matplotlib python3-numpy"
+
+missing=""
+for p in $packages; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
+done
+
+if [ -n "$missing" ]; then
+  echo "install-deps: installing$missing"
+  if [ "$(id -u)" = 0 ]; then sudo=""; else sudo="sudo"; fi
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends $missing
+fi
+
+stock_plugins=/usr/lib/freefem++
+stock_idp=/usr/include/freefem++/idp
+for f in "$stock_plugins/iovtk.so" "$stock_idp/getARGV.idp"; do
+  [ -e "$f" ] || { echo "install-deps: $f is missing after installing freefem++" >&2; exit 1; }
+done
+
+pref="$root/freefem++.pref"
+new=$(printf 'loadpath += "./"\nloadpath += "%s/plugin/build"\nloadpath += "%s"\nincludepath += "%s/edp/lib"\nincludepath += "%s"\n' \
+  "$root" "$stock_plugins" "$root" "$stock_idp")
+if [ ! -f "$pref" ] || [ "$(cat "$pref")" != "$new" ]; then
+  printf '%s\n' "$new" > "$pref"
+fi
