@@ -15,10 +15,12 @@ PLUGIN_SOURCES := plugin/sma.cpp $(wildcard plugin/core/*.hpp)
 
 # gmsh meshes (MSH 2.2: FreeFEM's gmshload does not read MSH 4). lc per level: meshes/beam.geo.
 BEAM_MESHES := meshes/beam-coarse.msh meshes/beam-medium.msh meshes/beam-fine.msh
-MESHES := $(BEAM_MESHES)
+RING_MESHES := meshes/ring-coarse.msh
+MESHES := $(BEAM_MESHES) $(RING_MESHES)
 lc_coarse := 0.0021
 lc_medium := 0.00125
 lc_fine := 0.0007
+ring_lc_coarse := 0.002
 
 .PHONY: run test deps plugin meshes clean check-scene
 
@@ -36,6 +38,10 @@ $(PLUGIN): $(PLUGIN_SOURCES)
 meshes: deps $(MESHES)
 meshes/beam-%.msh: meshes/beam.geo
 	@gmsh -2 -format msh22 -setnumber lc $(lc_$*) $< -o $@ > $@.log 2>&1 \
+	  || { cat $@.log; echo "error: gmsh failed on $<" >&2; exit 1; }
+	@rm -f $@.log
+meshes/ring-%.msh: meshes/ring.geo
+	@gmsh -2 -format msh22 -setnumber lc $(ring_lc_$*) $< -o $@ > $@.log 2>&1 \
 	  || { cat $@.log; echo "error: gmsh failed on $<" >&2; exit 1; }
 	@rm -f $@.log
 

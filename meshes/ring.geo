@@ -1,0 +1,27 @@
+// Quarter of the SMA ring (paper §4.2, Fig. 11): inner radius Ri, thickness Hr, triangles of
+// size lc. Boundary labels (physical lines): 1 inner surface (contact with the pipe),
+// 2 outer surface, 3 cut on the x axis (y = 0), 4 cut on the y axis (x = 0).
+// Usage: gmsh -2 -format msh22 -setnumber lc 0.001 ring.geo -o ring-coarse.msh
+// Ri = 5 cm is the paper's; the thickness is the project's choice (docs/parameters.md).
+If (!Exists(Ri)) Ri = 0.05;  EndIf
+If (!Exists(Hr)) Hr = 0.01;  EndIf
+If (!Exists(lc)) lc = 0.002; EndIf
+Ro = Ri + Hr;
+
+Point(1) = {0, 0, 0, lc};
+Point(2) = {Ri, 0, 0, lc};
+Point(3) = {Ro, 0, 0, lc};
+Point(4) = {0, Ro, 0, lc};
+Point(5) = {0, Ri, 0, lc};
+Line(1) = {2, 3};
+Circle(2) = {3, 1, 4};
+Line(3) = {4, 5};
+Circle(4) = {5, 1, 2};
+Curve Loop(1) = {1, 2, 3, 4};
+Plane Surface(1) = {1};
+
+Physical Curve("inner", 1) = {4};
+Physical Curve("outer", 2) = {2};
+Physical Curve("cut_x", 3) = {1};
+Physical Curve("cut_y", 4) = {3};
+Physical Surface("ring", 1) = {1};
