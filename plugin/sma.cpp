@@ -7,6 +7,8 @@
 //       returns the number of points whose phase changed.
 //   real AuchmutyLocal(real[] trace, real[] alpha, real[] c, real[] s, real[] weight)
 //       sum_i w_i (phi2*(s_i) - trace_i s_i), the sigma2 part of L_II [45].
+//   long PhaseCoefficients(real[] T, real[] law = [rho, a, L, T0, Tc], real[] alpha, real[] c)
+//       alpha(T) and c(T) (Pa) at every point (SPEC section 1).
 //   real SmaPluginVersion()  version stamp, checked by edp/lib/plugin.idp.
 //   real WallSeconds()       monotonic wall clock (s), for timings.
 
@@ -17,6 +19,7 @@
 #include <exception>
 #include <string>
 
+#include "core/material.hpp"
 #include "core/phase_projection.hpp"
 
 using namespace Fem2D;
@@ -52,6 +55,19 @@ double AuchmutyLocal(KN<double>* const& trace, KN<double>* const& alpha, KN<doub
   });
 }
 
+// alpha(T), c(T) per point; the law's constants are checked (T0 <= Tc, ...).
+long PhaseCoefficients(KN<double>* const& T, KN<double>* const& law, KN<double>* const& alpha,
+                       KN<double>* const& c) {
+  return guarded("PhaseCoefficients", [&] {
+    if (law->N() != 5)
+      throw std::invalid_argument("law must be [rho, a, L, T0, Tc], got " + std::to_string(law->N()) +
+                                  " values");
+    const sma::ThermalLaw l{(*law)[0], (*law)[1], (*law)[2], (*law)[3], (*law)[4]};
+    sma::phase_coefficients(l, cview(T), view(alpha), view(c));
+    return (long)T->N();
+  });
+}
+
 double SmaPluginVersion() { return 1.0; }
 
 // FreeFEM's time() has a resolution of one second and clock() counts CPU time; timings of the
@@ -66,6 +82,7 @@ double WallSeconds() {
 static void Load_Init() {
   typedef KN<double>* A;
   Global.Add("PhaseProject", "(", new OneOperator5_<long, A, A, A, A, A>(PhaseProject));
+  Global.Add("PhaseCoefficients", "(", new OneOperator4_<long, A, A, A, A>(PhaseCoefficients));
   Global.Add("AuchmutyLocal", "(", new OneOperator5_<double, A, A, A, A, A>(AuchmutyLocal));
   Global.Add("SmaPluginVersion", "(", new OneOperator0<double>(SmaPluginVersion));
   Global.Add("WallSeconds", "(", new OneOperator0<double>(WallSeconds));

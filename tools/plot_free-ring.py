@@ -1,0 +1,49 @@
+#!/usr/bin/python3
+"""Figure of the free-ring scene: temperatures and phase fractions against time.
+
+Usage: tools/plot_free-ring.py [results/free-ring] [other-run-dir label ...]
+Extra (directory, label) pairs overlay the mean temperature of other runs (e.g. -latent 0).
+"""
+import csv
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def read(outdir):
+    with open(os.path.join(outdir, "history.csv"), newline="") as f:
+        rows = list(csv.DictReader(f))
+    return {k: [float(r[k]) for r in rows] for k in rows[0]}
+
+
+def main():
+    outdir = sys.argv[1] if len(sys.argv) > 1 else "results/free-ring"
+    h = read(outdir)
+    fig, (ax, bx) = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
+    ax.plot(h["t"], h["T_outside"], "k--", lw=0.8, label="outside")
+    ax.plot(h["t"], h["T_mean"], label="ring, mean")
+    ax.plot(h["t"], h["T_inner"], lw=0.8, label="inner surface point")
+    extra = sys.argv[2:]
+    for d, label in zip(extra[::2], extra[1::2]):
+        ax.plot(read(d)["t"], read(d)["T_mean"], ":", label=label)
+    ax.axhline(210, color="0.6", lw=0.6)
+    ax.set_ylabel("T (K)")
+    ax.legend(fontsize=8)
+    ax.set_title("free ring cooled and heated through T0 = 210 K")
+    bx.plot(h["t"], h["fraction_austenite"], label="austenite")
+    bx.plot(h["t"], h["fraction_m1"], label="martensite 1")
+    bx.plot(h["t"], h["fraction_m2"], label="martensite 2")
+    bx.set_xlabel("t (s)")
+    bx.set_ylabel("area fraction")
+    bx.legend(fontsize=8)
+    partial = os.path.join(outdir, "temperature.partial.png")
+    fig.savefig(partial, dpi=120, bbox_inches="tight")
+    os.replace(partial, os.path.join(outdir, "temperature.png"))
+
+
+if __name__ == "__main__":
+    main()
