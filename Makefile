@@ -30,7 +30,7 @@ deps:
 plugin: deps $(PLUGIN)
 $(PLUGIN): $(PLUGIN_SOURCES)
 	@mkdir -p plugin/build
-	@cd plugin/build && ff-c++ ../sma.cpp -I/usr/include/eigen3 -I.. > build.log 2>&1 \
+	@cd plugin/build && ff-c++ CXX=$(CURDIR)/tools/cxx17 ../sma.cpp -I/usr/include/eigen3 -I.. > build.log 2>&1 \
 	  || { cat build.log; echo "error: building the plugin failed (plugin/build/build.log)" >&2; exit 1; }
 	@test -f $(PLUGIN) || { cat plugin/build/build.log; echo "error: ff-c++ made no $(PLUGIN)" >&2; exit 1; }
 	@echo "built $(PLUGIN)"

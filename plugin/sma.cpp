@@ -9,6 +9,11 @@
 //       sum_i w_i (phi2*(s_i) - trace_i s_i), the sigma2 part of L_II [45].
 //   long PhaseCoefficients(real[] T, real[] law = [rho, a, L, T0, Tc], real[] alpha, real[] c)
 //       alpha(T) and c(T) (Pa) at every point (SPEC section 1).
+//   long ObstacleGap(real[] x, real[] y, real[] pipe = [cx, cy, A, B], real[] gap, real[] nx, real[] ny)
+//       signed gap and outward pipe normal of reference points (circle when A == B).
+//   long PsorCondensed(real[int,int] W, real[] q, real[] g, real[] [omega, tol, maxit],
+//                      real[] r, real[] info)   projected SOR on the Delassus problem
+//       (r warm start in/out; info = [residual, converged]); returns the sweep count.
 //   real SmaPluginVersion()  version stamp, checked by edp/lib/plugin.idp.
 //   real WallSeconds()       monotonic wall clock (s), for timings.
 
@@ -20,6 +25,8 @@
 #include <string>
 
 #include "core/material.hpp"
+#include "core/obstacle.hpp"
+#include "core/psor.hpp"
 #include "core/phase_projection.hpp"
 
 using namespace Fem2D;
@@ -68,6 +75,48 @@ long PhaseCoefficients(KN<double>* const& T, KN<double>* const& law, KN<double>*
   });
 }
 
+// Gap and normal of points against a circular (A == B) or elliptic pipe.
+long ObstacleGap(KN<double>* const& x, KN<double>* const& y, KN<double>* const& pipe,
+                 KN<double>* const& gap, KN<double>* const& nx, KN<double>* const& ny) {
+  return guarded("ObstacleGap", [&] {
+    const long n = x->N();
+    if (y->N() != n || gap->N() != n || nx->N() != n || ny->N() != n)
+      throw std::invalid_argument("x, y, gap, nx, ny must have the same length");
+    if (pipe->N() != 4) throw std::invalid_argument("pipe must be [cx, cy, A, B]");
+    const double cx = (*pipe)[0], cy = (*pipe)[1], A = (*pipe)[2], B = (*pipe)[3];
+    for (long i = 0; i < n; ++i) {
+      const sma::ContactGeometry g = A == B ? sma::circle_gap((*x)[i], (*y)[i], cx, cy, A)
+                                            : sma::ellipse_gap((*x)[i], (*y)[i], cx, cy, A, B);
+      (*gap)[i] = g.gap;
+      (*nx)[i] = g.nx;
+      (*ny)[i] = g.ny;
+    }
+    return n;
+  });
+}
+
+// Condensed projected SOR; settings = [omega, tol, maxit]; info receives [residual, converged].
+long PsorCondensed(KNM<double>* const& W, KN<double>* const& q, KN<double>* const& g,
+                   KN<double>* const& settings, KN<double>* const& r, KN<double>* const& info) {
+  return guarded("PsorCondensed", [&] {
+    const long n = q->N();
+    if (W->N() != n || W->M() != n) throw std::invalid_argument("W must be square of the size of q");
+    if (settings->N() != 3) throw std::invalid_argument("settings must be [omega, tol, maxit]");
+    if (info->N() != 2) throw std::invalid_argument("info must have 2 entries");
+    Eigen::MatrixXd w(n, n);
+    for (long i = 0; i < n; ++i)
+      for (long j = 0; j < n; ++j) w(i, j) = (*W)(i, j);
+    Eigen::Map<const Eigen::VectorXd> qv(&(*q)[0], n), gv(&(*g)[0], g->N());
+    Eigen::VectorXd rv = Eigen::Map<const Eigen::VectorXd>(&(*r)[0], n);
+    const sma::PsorResult res = sma::psor_condensed(w, qv, gv, (*settings)[0], (*settings)[1],
+                                                    (int)(*settings)[2], rv);
+    for (long i = 0; i < n; ++i) (*r)[i] = rv[i];
+    (*info)[0] = res.residual;
+    (*info)[1] = res.converged ? 1 : 0;
+    return (long)res.iterations;
+  });
+}
+
 double SmaPluginVersion() { return 1.0; }
 
 // FreeFEM's time() has a resolution of one second and clock() counts CPU time; timings of the
@@ -83,6 +132,9 @@ static void Load_Init() {
   typedef KN<double>* A;
   Global.Add("PhaseProject", "(", new OneOperator5_<long, A, A, A, A, A>(PhaseProject));
   Global.Add("PhaseCoefficients", "(", new OneOperator4_<long, A, A, A, A>(PhaseCoefficients));
+  Global.Add("ObstacleGap", "(", new OneOperator6_<long, A, A, A, A, A, A>(ObstacleGap));
+  Global.Add("PsorCondensed", "(",
+             new OneOperator6_<long, KNM<double>*, A, A, A, A, A>(PsorCondensed));
   Global.Add("AuchmutyLocal", "(", new OneOperator5_<double, A, A, A, A, A>(AuchmutyLocal));
   Global.Add("SmaPluginVersion", "(", new OneOperator0<double>(SmaPluginVersion));
   Global.Add("WallSeconds", "(", new OneOperator0<double>(WallSeconds));
