@@ -15,12 +15,16 @@ PLUGIN_SOURCES := plugin/sma.cpp $(wildcard plugin/core/*.hpp)
 
 # gmsh meshes (MSH 2.2: FreeFEM's gmshload does not read MSH 4). lc per level: meshes/beam.geo.
 BEAM_MESHES := meshes/beam-coarse.msh meshes/beam-medium.msh meshes/beam-fine.msh
-RING_MESHES := meshes/ring-coarse.msh
+RING_MESHES := meshes/ring-coarse.msh meshes/ring-l1.msh meshes/ring-l2.msh meshes/ring-l3.msh meshes/ring-l4.msh
 MESHES := $(BEAM_MESHES) $(RING_MESHES)
 lc_coarse := 0.0021
 lc_medium := 0.00125
 lc_fine := 0.0007
-ring_lc_coarse := 0.002
+ring_opt_coarse := -setnumber lc 0.002
+ring_opt_l1 := -setnumber nr 4
+ring_opt_l2 := -setnumber nr 8
+ring_opt_l3 := -setnumber nr 16
+ring_opt_l4 := -setnumber nr 32
 
 .PHONY: run test deps plugin meshes clean check-scene
 
@@ -41,7 +45,7 @@ meshes/beam-%.msh: meshes/beam.geo
 	  || { cat $@.log; echo "error: gmsh failed on $<" >&2; exit 1; }
 	@rm -f $@.log
 meshes/ring-%.msh: meshes/ring.geo
-	@gmsh -2 -format msh22 -setnumber lc $(ring_lc_$*) $< -o $@ > $@.log 2>&1 \
+	@gmsh -2 -format msh22 $(ring_opt_$*) $< -o $@ > $@.log 2>&1 \
 	  || { cat $@.log; echo "error: gmsh failed on $<" >&2; exit 1; }
 	@rm -f $@.log
 

@@ -2,6 +2,7 @@
 // size lc. Boundary labels (physical lines): 1 inner surface (contact with the pipe),
 // 2 outer surface, 3 cut on the x axis (y = 0), 4 cut on the y axis (x = 0).
 // Usage: gmsh -2 -format msh22 -setnumber lc 0.001 ring.geo -o ring-coarse.msh
+//        gmsh -2 -format msh22 -setnumber nr 16 ring.geo -o ring-l3.msh   (structured)
 // Ri = 5 cm is the paper's; the thickness is the project's choice (docs/parameters.md).
 If (!Exists(Ri)) Ri = 0.05;  EndIf
 If (!Exists(Hr)) Hr = 0.01;  EndIf
@@ -19,6 +20,15 @@ Line(3) = {4, 5};
 Circle(4) = {5, 1, 2};
 Curve Loop(1) = {1, 2, 3, 4};
 Plane Surface(1) = {1};
+
+// Structured variant (-setnumber nr N): nr layers through the thickness, 5 nr segments along
+// each arc, all diagonals the same way, so that every inner-surface node sees the same mesh
+// around it and the nodal contact pressures of a uniform fit are uniform (no mesh noise).
+If (Exists(nr))
+  Transfinite Curve{1, 3} = nr + 1;
+  Transfinite Curve{2, 4} = 5 * nr + 1;
+  Transfinite Surface{1} Alternate;
+EndIf
 
 Physical Curve("inner", 1) = {4};
 Physical Curve("outer", 2) = {2};

@@ -61,9 +61,14 @@ inline PsorResult psor_condensed(const Eigen::MatrixXd& W, const Eigen::VectorXd
     if (!(g[i] >= 0.0))
       throw std::invalid_argument("psor: slip threshold g = " + std::to_string(g[i]) +
                                   " < 0 at contact node " + std::to_string(i));
-    if (!(W(2 * i, 2 * i) > 0.0 && W(2 * i + 1, 2 * i + 1) > 0.0))
-      throw std::invalid_argument("psor: Delassus diagonal not positive at contact node " +
-                                  std::to_string(i));
+    if (!(W(2 * i, 2 * i) > 0.0))
+      throw std::invalid_argument("psor: Delassus normal diagonal not positive at contact node " +
+                                  std::to_string(i) + " (is its normal motion blocked by a support?)");
+    // A support may block the tangential motion (a node on a symmetry cut): W_tt = 0 is then
+    // allowed with g = 0, and r_t stays 0.
+    if (!(W(2 * i + 1, 2 * i + 1) > 0.0) && !(W(2 * i + 1, 2 * i + 1) == 0.0 && g[i] == 0.0))
+      throw std::invalid_argument("psor: Delassus tangential diagonal not positive at contact node " +
+                                  std::to_string(i) + " with slip threshold " + std::to_string(g[i]));
   }
   PsorResult result;
   Eigen::VectorXd w = W * r - q;  // kept up to date column by column
@@ -71,6 +76,7 @@ inline PsorResult psor_condensed(const Eigen::MatrixXd& W, const Eigen::VectorXd
     ++result.iterations;
     double change = 0.0, size = 0.0;
     for (Eigen::Index k = 0; k < 2 * m; ++k) {
+      if (W(k, k) == 0.0) continue;  // blocked tangential motion (checked above)
       const double old = r[k];
       double updated = old - omega * w[k] / W(k, k);
       updated = (k % 2 == 0) ? std::max(0.0, updated) : std::clamp(updated, -g[k / 2], g[k / 2]);

@@ -132,6 +132,15 @@ TEST(PsorCondensed, RejectsBadInput) {
   EXPECT_THROW(sma::psor_condensed(W, q, negative, 1.5, 1e-10, 10, r), std::invalid_argument);
   Eigen::VectorXd wrong = Eigen::VectorXd::Zero(3);
   EXPECT_THROW(sma::psor_condensed(W, q, g, 1.5, 1e-10, 10, wrong), std::invalid_argument);
+  // A blocked tangential motion (W_tt = 0) is accepted only with g = 0.
+  Eigen::MatrixXd blocked(2, 2);
+  blocked << 1, 0, 0, 0;
+  Eigen::VectorXd gz = Eigen::VectorXd::Zero(1), rz = Eigen::VectorXd::Zero(2);
+  EXPECT_TRUE(sma::psor_condensed(blocked, q, gz, 1.0, 1e-12, 10, rz).converged);
+  EXPECT_DOUBLE_EQ(rz[0], 1.0);
+  EXPECT_DOUBLE_EQ(rz[1], 0.0);
+  Eigen::VectorXd gpos = Eigen::VectorXd::Constant(1, 0.5);
+  EXPECT_THROW(sma::psor_condensed(blocked, q, gpos, 1.5, 1e-12, 10, rz), std::invalid_argument);
   // Not converging in the allowed sweeps is reported, not hidden.
   Eigen::MatrixXd hard(2, 2);
   hard << 1, 0.999, 0.999, 1;
