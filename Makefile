@@ -13,13 +13,14 @@ FF := tools/ff
 PLUGIN := plugin/build/sma.so
 PLUGIN_SOURCES := plugin/sma.cpp $(wildcard plugin/core/*.hpp)
 
-# gmsh meshes (MSH 2.2: FreeFEM's gmshload does not read MSH 4). lc per level: meshes/beam.geo.
+# gmsh meshes (MSH 2.2: FreeFEM's gmshload does not read MSH 4): meshes/<geo>-<level>.msh is
+# made from meshes/<geo>.geo with the gmsh options <geo>_opt_<level> (the .geo files say why).
 BEAM_MESHES := meshes/beam-coarse.msh meshes/beam-medium.msh meshes/beam-fine.msh
 RING_MESHES := meshes/ring-coarse.msh meshes/ring-l1.msh meshes/ring-l2.msh meshes/ring-l3.msh meshes/ring-l4.msh
 MESHES := $(BEAM_MESHES) $(RING_MESHES)
-lc_coarse := 0.0021
-lc_medium := 0.00125
-lc_fine := 0.0007
+beam_opt_coarse := -setnumber lc 0.0021
+beam_opt_medium := -setnumber lc 0.00125
+beam_opt_fine := -setnumber lc 0.0007
 ring_opt_coarse := -setnumber lc 0.002
 ring_opt_l1 := -setnumber nr 4
 ring_opt_l2 := -setnumber nr 8
@@ -40,14 +41,15 @@ $(PLUGIN): $(PLUGIN_SOURCES)
 	@echo "built $(PLUGIN)"
 
 meshes: deps $(MESHES)
+define gmsh_mesh
+	@gmsh -2 -format msh22 $($(1)_opt_$*) $< -o $@ > $@.log 2>&1 \
+	  || { cat $@.log; echo "error: gmsh failed on $<" >&2; exit 1; }
+	@rm -f $@.log
+endef
 meshes/beam-%.msh: meshes/beam.geo
-	@gmsh -2 -format msh22 -setnumber lc $(lc_$*) $< -o $@ > $@.log 2>&1 \
-	  || { cat $@.log; echo "error: gmsh failed on $<" >&2; exit 1; }
-	@rm -f $@.log
+	$(call gmsh_mesh,beam)
 meshes/ring-%.msh: meshes/ring.geo
-	@gmsh -2 -format msh22 $(ring_opt_$*) $< -o $@ > $@.log 2>&1 \
-	  || { cat $@.log; echo "error: gmsh failed on $<" >&2; exit 1; }
-	@rm -f $@.log
+	$(call gmsh_mesh,ring)
 
 check-scene:
 	@if [[ ! "$(SCENE)" =~ ^[A-Za-z0-9_-]+$$ ]]; then \
