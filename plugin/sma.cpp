@@ -11,9 +11,14 @@
 //       alpha(T) and c(T) (Pa) at every point (SPEC section 1).
 //   long ObstacleGap(real[] x, real[] y, real[] pipe = [cx, cy, A, B], real[] gap, real[] nx, real[] ny)
 //       signed gap and outward pipe normal of reference points (circle when A == B).
-//   long PsorCondensed(real[int,int] W, real[] q, real[] g, real[] [omega, tol, maxit],
+//   long PsorCondensed(real[int,int] W, real[] q, real[] g, real[] [omega, tol, maxit, polish],
 //                      real[] r, real[] info)   projected SOR on the Delassus problem
-//       (r warm start in/out; info = [residual, converged]); returns the sweep count.
+//       (r warm start in/out; info = [residual, converged]); returns the sweep count. polish > 0
+//       (optional): try an exact active-set solve every `polish` sweeps.
+//   long PsorFull(matrix K, real[] b, real[int,int] contact, real[] [omega, tol, maxit], real[] u,
+//                 real[] r, real[] info)   projected SOR on the full system K u = b (mode a);
+//       contact has one row per contact node: [vertex, nx, ny, gap, threshold g, t.u previous];
+//       u warm start in/out; r = interleaved (r_n, r_t) per node; info = [residual, converged].
 //   real SmaPluginVersion()  version stamp, checked by edp/lib/plugin.idp.
 //   real WallSeconds()       monotonic wall clock (s), for timings.
 
@@ -27,6 +32,7 @@
 #include "core/material.hpp"
 #include "core/obstacle.hpp"
 #include "core/psor.hpp"
+#include "core/psor_full.hpp"
 #include "core/phase_projection.hpp"
 
 using namespace Fem2D;
@@ -101,15 +107,17 @@ long PsorCondensed(KNM<double>* const& W, KN<double>* const& q, KN<double>* cons
   return guarded("PsorCondensed", [&] {
     const long n = q->N();
     if (W->N() != n || W->M() != n) throw std::invalid_argument("W must be square of the size of q");
-    if (settings->N() != 3) throw std::invalid_argument("settings must be [omega, tol, maxit]");
+    if (settings->N() != 3 && settings->N() != 4)
+      throw std::invalid_argument("settings must be [omega, tol, maxit] or [omega, tol, maxit, polish]");
     if (info->N() != 2) throw std::invalid_argument("info must have 2 entries");
+    const int polish = settings->N() == 4 ? (int)(*settings)[3] : 0;
     Eigen::MatrixXd w(n, n);
     for (long i = 0; i < n; ++i)
       for (long j = 0; j < n; ++j) w(i, j) = (*W)(i, j);
     Eigen::Map<const Eigen::VectorXd> qv(&(*q)[0], n), gv(&(*g)[0], g->N());
     Eigen::VectorXd rv = Eigen::Map<const Eigen::VectorXd>(&(*r)[0], n);
     const sma::PsorResult res = sma::psor_condensed(w, qv, gv, (*settings)[0], (*settings)[1],
-                                                    (int)(*settings)[2], rv);
+                                                    (int)(*settings)[2], rv, polish);
     for (long i = 0; i < n; ++i) (*r)[i] = rv[i];
     (*info)[0] = res.residual;
     (*info)[1] = res.converged ? 1 : 0;
@@ -117,7 +125,50 @@ long PsorCondensed(KNM<double>* const& W, KN<double>* const& q, KN<double>* cons
   });
 }
 
-double SmaPluginVersion() { return 1.0; }
+// Projected SOR on the full stiffness system; the matrix is read in CSR form from a copy: sorting
+// the caller's hash matrix in place (HashMatrix::CSR) invalidates the factorisation FreeFEM keeps
+// for K^-1 (measured: the next K^-1 solves were wrong), so the copy costs O(nnz) per call.
+long PsorFull(Matrice_Creuse<double>* const& K, KN<double>* const& b, KNM<double>* const& contact,
+              KN<double>* const& settings, KN<double>* const& u, KN<double>* const& r,
+              KN<double>* const& info) {
+  return guarded("PsorFull", [&] {
+    HashMatrix<int, double>* A = K->pHM();
+    if (!A) throw std::invalid_argument("the matrix is empty");
+    if (A->half)
+      throw std::invalid_argument("the matrix is stored as a half (symmetric solver): build it with"
+                                  " solver = sparsesolver or UMFPACK");
+    if (A->n != A->m || A->n != b->N() || A->n != u->N())
+      throw std::invalid_argument("K must be square, of the size of b and u");
+    const long m = contact->N();
+    if (m > 0 && contact->M() != 6)
+      throw std::invalid_argument("contact must have 6 columns [vertex, nx, ny, gap, g, t.u previous]");
+    if (settings->N() < 3) throw std::invalid_argument("settings must be [omega, tol, maxit, ...]");
+    if (info->N() != 2) throw std::invalid_argument("info must have 2 entries");
+    if (r->N() != 2 * m) throw std::invalid_argument("r must have 2 entries per contact node");
+    HashMatrix<int, double> rows(*A);
+    rows.CSR();
+    std::vector<int> vertex(m);
+    std::vector<double> nx(m), ny(m), gap(m), g(m), ref(m), rn(m), rt(m);
+    for (long i = 0; i < m; ++i) {
+      vertex[i] = (int)lrint((*contact)((long)i, 0L));
+      nx[i] = (*contact)((long)i, 1L), ny[i] = (*contact)((long)i, 2L), gap[i] = (*contact)((long)i, 3L);
+      g[i] = (*contact)((long)i, 4L), ref[i] = (*contact)((long)i, 5L);
+    }
+    sma::CsrView csr{(int)rows.n, rows.p, rows.j, rows.aij};
+    sma::FullPsorSettings set;
+    set.omega = (*settings)[0];
+    set.tol = (*settings)[1];
+    set.maxit = (int)(*settings)[2];
+    const sma::ContactNodesView nodes{vertex, nx, ny, gap, g, ref};
+    const sma::PsorResult res = sma::psor_full(csr, cview(b), nodes, set, view(u), rn, rt);
+    for (long i = 0; i < m; ++i) (*r)[2 * i] = rn[i], (*r)[2 * i + 1] = rt[i];
+    (*info)[0] = res.residual;
+    (*info)[1] = res.converged ? 1 : 0;
+    return (long)res.iterations;
+  });
+}
+
+double SmaPluginVersion() { return 2.0; }
 
 // FreeFEM's time() has a resolution of one second and clock() counts CPU time; timings of the
 // scenes are wall-clock seconds from a monotonic clock.
@@ -135,6 +186,8 @@ static void Load_Init() {
   Global.Add("ObstacleGap", "(", new OneOperator6_<long, A, A, A, A, A, A>(ObstacleGap));
   Global.Add("PsorCondensed", "(",
              new OneOperator6_<long, KNM<double>*, A, A, A, A, A>(PsorCondensed));
+  Global.Add("PsorFull", "(",
+             new OneOperator7_<long, Matrice_Creuse<double>*, A, KNM<double>*, A, A, A, A>(PsorFull));
   Global.Add("AuchmutyLocal", "(", new OneOperator5_<double, A, A, A, A, A>(AuchmutyLocal));
   Global.Add("SmaPluginVersion", "(", new OneOperator0<double>(SmaPluginVersion));
   Global.Add("WallSeconds", "(", new OneOperator0<double>(WallSeconds));
