@@ -5,7 +5,7 @@ SHELL := /bin/bash
 .DEFAULT_GOAL := run
 
 SCENES := $(sort $(basename $(notdir $(wildcard edp/scenes/*.edp))))
-SCENE ?= beam
+SCENE ?= sleeve-circular
 ARGS ?=
 PYTHON := /usr/bin/python3
 FF := tools/ff
@@ -17,7 +17,8 @@ PLUGIN_SOURCES := plugin/sma.cpp $(wildcard plugin/core/*.hpp)
 # made from meshes/<geo>.geo with the gmsh options <geo>_opt_<level> (the .geo files say why).
 BEAM_MESHES := meshes/beam-coarse.msh meshes/beam-medium.msh meshes/beam-fine.msh
 RING_MESHES := meshes/ring-coarse.msh meshes/ring-l1.msh meshes/ring-l2.msh meshes/ring-l3.msh meshes/ring-l4.msh
-MESHES := $(BEAM_MESHES) $(RING_MESHES)
+SLEEVE_MESHES := meshes/sleeve-coarse.msh meshes/sleeve-quarter.msh
+MESHES := $(BEAM_MESHES) $(RING_MESHES) $(SLEEVE_MESHES)
 beam_opt_coarse := -setnumber lc 0.0021
 beam_opt_medium := -setnumber lc 0.00125
 beam_opt_fine := -setnumber lc 0.0007
@@ -26,6 +27,9 @@ ring_opt_l1 := -setnumber nr 4
 ring_opt_l2 := -setnumber nr 8
 ring_opt_l3 := -setnumber nr 16
 ring_opt_l4 := -setnumber nr 32
+# The sleeve's ring: inner radius 55 um below the pipe's 5.05 cm (docs/parameters.md, sleeve).
+sleeve_opt_coarse := -setnumber Ri 0.050445 -setnumber nr 6
+sleeve_opt_quarter := -setnumber Ri 0.050445 -setnumber nr 18
 
 .PHONY: run test deps plugin meshes clean check-scene
 
@@ -50,6 +54,8 @@ meshes/beam-%.msh: meshes/beam.geo
 	$(call gmsh_mesh,beam)
 meshes/ring-%.msh: meshes/ring.geo
 	$(call gmsh_mesh,ring)
+meshes/sleeve-%.msh: meshes/ring.geo
+	$(call gmsh_mesh,sleeve)
 
 check-scene:
 	@if [[ ! "$(SCENE)" =~ ^[A-Za-z0-9_-]+$$ ]]; then \
@@ -60,7 +66,8 @@ check-scene:
 
 run: check-scene plugin meshes
 	$(FF) edp/scenes/$(SCENE).edp $(ARGS)
-	@if [ -f tools/plot_$(SCENE).py ]; then $(PYTHON) tools/plot_$(SCENE).py results/$(SCENE); fi
+	@if [ -f tools/plot_$(SCENE).py ]; then $(PYTHON) tools/plot_$(SCENE).py results/$(SCENE); \
+	 elif [[ "$(SCENE)" == sleeve-* ]]; then $(PYTHON) tools/plot_sleeve.py results/$(SCENE); fi
 	@echo "results in results/$(SCENE)/"
 
 test: plugin meshes
