@@ -9,16 +9,11 @@
 #include <random>
 
 #include "core/psor.hpp"
+#include "random_problems.hpp"
 
 namespace {
 
-Eigen::MatrixXd random_spd(int n, std::mt19937& rng) {
-  std::normal_distribution<double> normal;
-  Eigen::MatrixXd A(n, n);
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) A(i, j) = normal(rng);
-  return A * A.transpose() + n * Eigen::MatrixXd::Identity(n, n);
-}
+using sma_test::random_spd;
 
 // Frictionless Signorini on the normal components only: LCP  r >= 0, W r - q >= 0, r'(W r - q) = 0,
 // solved exactly by trying every active set (components with r > 0).
@@ -85,14 +80,11 @@ TEST(PsorCondensed, FrictionlessEqualsActiveSetEnumeration) {
 
 TEST(PsorCondensed, TrescaSatisfiesTheContactLaws) {
   std::mt19937 rng(7);
-  std::normal_distribution<double> normal;
-  std::uniform_real_distribution<double> uniform(0.0, 1.0);
   for (int trial = 0; trial < 40; ++trial) {
     const int m = 1 + trial % 5;
-    const Eigen::MatrixXd W = random_spd(2 * m, rng);
-    Eigen::VectorXd q(2 * m), g(m);
-    for (int k = 0; k < 2 * m; ++k) q[k] = normal(rng);
-    for (int i = 0; i < m; ++i) g[i] = uniform(rng);
+    const sma_test::TrescaProblem p = sma_test::random_tresca(m, 1.0, false, rng);
+    const Eigen::MatrixXd& W = p.W;
+    const Eigen::VectorXd &q = p.q, &g = p.g;
     Eigen::VectorXd r = Eigen::VectorXd::Zero(2 * m);
     for (double omega : {1.0, 1.88}) {
       const sma::PsorResult res = sma::psor_condensed(W, q, g, omega, 1e-14, 200000, r);

@@ -19,6 +19,7 @@
 #include <string>
 
 #include "core/psor.hpp"
+#include "random_problems.hpp"
 
 extern "C" {
 #include <FrictionContactProblem.h>
@@ -32,14 +33,6 @@ extern "C" {
 }
 
 namespace {
-
-Eigen::MatrixXd random_delassus(int n, std::mt19937& rng) {
-  std::normal_distribution<double> normal;
-  Eigen::MatrixXd A(n, n);
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) A(i, j) = normal(rng);
-  return A * A.transpose() / n + Eigen::MatrixXd::Identity(n, n);
-}
 
 NumericsMatrix* dense(const Eigen::MatrixXd& W) {
   const int n = (int)W.rows();
@@ -124,14 +117,11 @@ void classify(const Eigen::VectorXd& r, const Eigen::VectorXd& g, Figures& f) {
 TEST(SiconosOracle, TrescaEqualsRelayLemke) {
   Figures figures;
   std::mt19937 rng(1998);
-  std::normal_distribution<double> normal;
-  std::uniform_real_distribution<double> uniform(0.0, 1.0);
   for (int trial = 0; trial < 60; ++trial) {
     const int m = 1 + trial % 5;
-    const Eigen::MatrixXd W = random_delassus(2 * m, rng);
-    Eigen::VectorXd q(2 * m), g(m);
-    for (int k = 0; k < 2 * m; ++k) q[k] = normal(rng);
-    for (int i = 0; i < m; ++i) g[i] = 0.5 * uniform(rng);
+    const sma_test::TrescaProblem p = sma_test::random_tresca(m, 0.5, true, rng);
+    const Eigen::MatrixXd& W = p.W;
+    const Eigen::VectorXd &q = p.q, &g = p.g;
     Eigen::VectorXd r = Eigen::VectorXd::Zero(2 * m);
     const sma::PsorResult res = sma::psor_condensed(W, q, g, 1.5, 1e-15, 100000, r);
     ASSERT_TRUE(res.converged);
@@ -150,15 +140,13 @@ TEST(SiconosOracle, TrescaEqualsRelayLemke) {
 TEST(SiconosOracle, CoulombFixedPointEqualsFc2dLemke) {
   Figures figures;
   std::mt19937 rng(2026);
-  std::normal_distribution<double> normal;
-  std::uniform_real_distribution<double> uniform(0.0, 1.0);
   for (int trial = 0; trial < 60; ++trial) {
     const int m = 1 + trial % 5;
-    const Eigen::MatrixXd W = random_delassus(2 * m, rng);
-    Eigen::VectorXd q(2 * m), mu(m);
-    for (int k = 0; k < 2 * m; ++k) q[k] = normal(rng);
+    sma_test::TrescaProblem p = sma_test::random_tresca(m, 0.5, true, rng);  // g: the mu
+    const Eigen::MatrixXd& W = p.W;
+    Eigen::VectorXd& q = p.q;
+    const Eigen::VectorXd& mu = p.g;
     for (int i = 0; i < m; ++i) q[2 * i] = std::fabs(q[2 * i]) + 0.2;  // mostly in contact
-    for (int i = 0; i < m; ++i) mu[i] = 0.5 * uniform(rng);
     Eigen::VectorXd r = Eigen::VectorXd::Zero(2 * m);
     const sma::CoulombResult res = sma::coulomb_condensed(W, q, mu, 1.5, 1e-15, 100000, 1e-13, 500, r);
     ASSERT_TRUE(res.converged) << "trial " << trial << ": fixed point residual " << res.residual;
