@@ -1,4 +1,5 @@
 """Shared helpers of the scene verification tests: named checks and the verification record."""
+import csv
 import json
 import os
 import subprocess
@@ -31,6 +32,12 @@ def run_scene(scene, out_name, *args):
     subprocess.run([os.path.join(ROOT, "tools", "ff"), f"edp/scenes/{scene}.edp", "-out", out, *args],
                    cwd=ROOT, check=True)
     return out
+
+
+def rows(path):
+    """The rows of a CSV file with a header line, as dicts."""
+    with open(path, newline="") as f:
+        return list(csv.DictReader(line for line in f if not line.startswith("#")))
 
 
 def finish():

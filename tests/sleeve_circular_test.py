@@ -10,19 +10,13 @@ And the final pressure uniform along the surface within 1 %, the DC Lagrangian p
 dcmaxit iterations), every contact node's force >= 0.
 Writes results/checks/sleeve_circular_phases.json.
 """
-import csv
 import json
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from checklib import check, finish, record, run_scene  # noqa: E402
-
-
-def rows(path):
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
+from checklib import check, finish, record, rows, run_scene  # noqa: E402
 
 
 def r_squared(xs, ys):
