@@ -19,6 +19,8 @@
 //                 real[] r, real[] info)   projected SOR on the full system K u = b (mode a);
 //       contact has one row per contact node: [vertex, nx, ny, gap, threshold g, t.u previous];
 //       u warm start in/out; r = interleaved (r_n, r_t) per node; info = [residual, converged].
+//   long RoundToFloat(real[] x)   rounds every value to the nearest single-precision float
+//       (IEEE round to nearest even), in place; returns how many values changed.
 //   real SmaPluginVersion()  version stamp, checked by edp/lib/plugin.idp.
 //   real WallSeconds()       monotonic wall clock (s), for timings.
 
@@ -168,7 +170,18 @@ long PsorFull(Matrice_Creuse<double>* const& K, KN<double>* const& b, KNM<double
   });
 }
 
-double SmaPluginVersion() { return 2.0; }
+// The 1998 code's single-precision mesh coordinates (paper Fig. 15-16).
+long RoundToFloat(KN<double>* const& x) {
+  long changed = 0;
+  for (long i = 0; i < x->N(); ++i) {
+    const double rounded = static_cast<double>(static_cast<float>((*x)[i]));
+    changed += rounded != (*x)[i];
+    (*x)[i] = rounded;
+  }
+  return changed;
+}
+
+double SmaPluginVersion() { return 3.0; }
 
 // FreeFEM's time() has a resolution of one second and clock() counts CPU time; timings of the
 // scenes are wall-clock seconds from a monotonic clock.
@@ -189,6 +202,7 @@ static void Load_Init() {
   Global.Add("PsorFull", "(",
              new OneOperator7_<long, Matrice_Creuse<double>*, A, KNM<double>*, A, A, A, A>(PsorFull));
   Global.Add("AuchmutyLocal", "(", new OneOperator5_<double, A, A, A, A, A>(AuchmutyLocal));
+  Global.Add("RoundToFloat", "(", new OneOperator1_<long, A>(RoundToFloat));
   Global.Add("SmaPluginVersion", "(", new OneOperator0<double>(SmaPluginVersion));
   Global.Add("WallSeconds", "(", new OneOperator0<double>(WallSeconds));
 }
