@@ -17,7 +17,7 @@ PLUGIN_SOURCES := plugin/sma.cpp $(wildcard plugin/core/*.hpp)
 # made from meshes/<geo>.geo with the gmsh options <geo>_opt_<level> (the .geo files say why).
 BEAM_MESHES := meshes/beam-coarse.msh meshes/beam-medium.msh meshes/beam-fine.msh
 RING_MESHES := meshes/ring-coarse.msh meshes/ring-l1.msh meshes/ring-l2.msh meshes/ring-l3.msh meshes/ring-l4.msh
-SLEEVE_MESHES := meshes/sleeve-coarse.msh meshes/sleeve-quarter.msh
+SLEEVE_MESHES := meshes/sleeve-coarse.msh meshes/sleeve-quarter.msh meshes/sleeve-half-coarse.msh meshes/sleeve-half.msh
 MESHES := $(BEAM_MESHES) $(RING_MESHES) $(SLEEVE_MESHES)
 beam_opt_coarse := -setnumber lc 0.0021
 beam_opt_medium := -setnumber lc 0.00125
@@ -30,6 +30,8 @@ ring_opt_l4 := -setnumber nr 32
 # The sleeve's ring: inner radius 55 um below the pipe's 5.05 cm (docs/parameters.md, sleeve).
 sleeve_opt_coarse := -setnumber Ri 0.050445 -setnumber nr 6
 sleeve_opt_quarter := -setnumber Ri 0.050445 -setnumber nr 18
+sleeve_opt_half-coarse := $(sleeve_opt_coarse) -setnumber half 1
+sleeve_opt_half := $(sleeve_opt_quarter) -setnumber half 1
 
 .PHONY: run test deps plugin meshes clean check-scene
 

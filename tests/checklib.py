@@ -40,6 +40,58 @@ def rows(path):
         return list(csv.DictReader(line for line in f if not line.startswith("#")))
 
 
+def r_squared(xs, ys):
+    """Coefficient of determination and slope of the least-squares line through (xs, ys)."""
+    n = len(xs)
+    mx, my = sum(xs) / n, sum(ys) / n
+    sxx = sum((x - mx) ** 2 for x in xs)
+    sxy = sum((x - mx) * (y - my) for x, y in zip(xs, ys))
+    slope = sxy / sxx
+    ss_res = sum((y - my - slope * (x - mx)) ** 2 for x, y in zip(xs, ys))
+    ss_tot = sum((y - my) ** 2 for y in ys)
+    return 1 - ss_res / ss_tot, slope
+
+
+def four_phases(label, T, p, austenite, first_contact):
+    """Checks the four phases of a sleeve's force-temperature curve (SPEC section 6) at one point:
+    (1) zero force before contact (at least 3 steps); (2) contact while the ring is all
+    martensite, the force linear in T (R^2 > 0.99 over at least 5 steps); (3) jumps while it
+    turns back to austenite (largest one-step rise at least 3 x the mean rise per step of phase
+    2); (4) constant once all austenite for good (relative spread < 1e-6); in that order.
+    T, p: temperature and force density per step at the point; austenite: the ring's austenite
+    fraction per step; first_contact: the step index (from 0) where the point's contact starts.
+    Returns the figures measured."""
+    reversion = next(i for i, f in enumerate(austenite) if f > 0)
+    # All austenite for good: phase points near T* may flip back and forth for a few steps
+    # (SPEC section 4, hazard 2: on/off phases with Crank-Nicolson latent heat): the jerks.
+    all_austenite = max(i for i, f in enumerate(austenite) if f < 1) + 1
+    flips = sum(1 for a, b in zip(austenite[reversion:all_austenite], austenite[reversion + 1:all_austenite + 1])
+                if b < a)
+    print(f"{label}: contact at step {first_contact + 1}, reversion from {reversion + 1}, all austenite "
+          f"for good at {all_austenite + 1} of {len(p)}; the austenite fraction fell back {flips} times")
+    check(first_contact >= 3 and all(v == 0 for v in p[:first_contact]),
+          f"{label} phase 1: zero force over the {first_contact} steps before contact")
+    lin_T, lin_p = T[first_contact:reversion], p[first_contact:reversion]
+    check(len(lin_p) >= 5, f"{label} phase 2 lasts {len(lin_p)} >= 5 steps (contact, still martensite)")
+    r2, slope = r_squared(lin_T, lin_p) if len(lin_p) >= 3 else (0, 0)
+    check(r2 > 0.99 and slope > 0, f"{label} phase 2: force linear in T, R^2 = {r2:.5f} > 0.99, "
+          f"slope {slope / 1e6:.3f} MPa/K > 0")
+    rises = [b - a for a, b in zip(p[reversion - 1:all_austenite], p[reversion:all_austenite + 1])]
+    mean_rise_linear = (lin_p[-1] - lin_p[0]) / max(1, len(lin_p) - 1)
+    biggest = max(rises)
+    check(biggest >= 3 * mean_rise_linear,
+          f"{label} phase 3: jumps, largest one-step rise {biggest / 1e6:.3f} MPa >= 3 x the mean rise "
+          f"per step of phase 2 ({mean_rise_linear / 1e6:.4f} MPa)")
+    final = p[all_austenite:]
+    spread = (max(final) - min(final)) / final[-1]
+    check(spread < 1e-6, f"{label} phase 4: constant force once all austenite, relative spread {spread:.2e}")
+    check(first_contact < reversion < all_austenite < len(p) - 5, f"{label}: the four phases come in order")
+    return {"first_contact_step": first_contact + 1, "reversion_step": reversion + 1,
+            "all_austenite_step": all_austenite + 1, "linear_r2": r2, "linear_slope_Pa_per_K": slope,
+            "largest_jump_Pa": biggest, "austenite_fraction_decreases_in_phase_3": flips,
+            "mean_linear_rise_Pa": mean_rise_linear, "final_spread": spread}
+
+
 def finish():
     if failures:
         print(f"{len(failures)} checks failed", file=sys.stderr)

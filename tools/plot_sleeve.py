@@ -31,9 +31,11 @@ def read_csv(path, skip_comment=True):
 def force_temperature(outdir, scene):
     p = read_csv(os.path.join(outdir, "points.csv"))
     fig, ax = plt.subplots(figsize=(7, 4.5))
-    for name, label in (("x_axis", "on the x axis"), ("diagonal", "at 45 degrees"),
-                        ("y_axis", "on the y axis")):
-        ax.plot(p[f"T_{name}_C"], p[f"pressure_{name}_GPa"], lw=1, label=label)
+    labels = {"x_axis": "on the x axis", "diagonal": "at 45 degrees", "y_axis": "on the y axis",
+              "near": "0 degrees (side the pipe is shifted to)", "top": "90 degrees", "far": "180 degrees"}
+    names = [k[len("pressure_"):-len("_GPa")] for k in p if k.startswith("pressure_")]
+    for name in names:
+        ax.plot(p[f"T_{name}_C"], p[f"pressure_{name}_GPa"], lw=1, label=labels.get(name, name))
     ax.set_xlabel("temperature at the point (C)")
     ax.set_ylabel("clamping force density (GPa)")
     ax.set_title(f"{scene}: clamping force against temperature")
