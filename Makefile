@@ -1,6 +1,7 @@
 # SMA coupling sleeves (Pagano, Alart, Lebon 1998): FreeFEM scenes with a C++ load plugin.
 #   make run  [SCENE=<scene>] [ARGS='-name value ...']   install, build, run a scene, draw its figures
 #   make test                                            install, build, pass every test (ctest)
+#   make figures                                         every paper figure beside ours: docs/figures.md
 SHELL := /bin/bash
 .DEFAULT_GOAL := run
 
@@ -33,7 +34,10 @@ sleeve_opt_quarter := -setnumber Ri 0.050445 -setnumber nr 18
 sleeve_opt_half-coarse := $(sleeve_opt_coarse) -setnumber half 1
 sleeve_opt_half := $(sleeve_opt_quarter) -setnumber half 1
 
-.PHONY: run test deps plugin meshes clean check-scene
+.PHONY: run test figures deps plugin meshes clean check-scene
+# The scenes behind the paper's figures (docs/figures.md), run at their defaults by make figures.
+FIGURE_SCENES := beam sleeve-circular sleeve-circular-single sleeve-circular-gvar sleeve-offset \
+                 sleeve-elliptic sleeve-elliptic-friction sleeve-random-threshold
 
 deps:
 	@tools/install-deps.sh
@@ -77,6 +81,11 @@ test: plugin meshes
 	  { mkdir -p build; cmake -S . -B build -DCMAKE_BUILD_TYPE=Release; }
 	@cmake --build build -j2
 	@cd build && ctest --output-on-failure -j2
+
+figures: test
+	@for scene in $(FIGURE_SCENES); do \
+	  $(MAKE) --no-print-directory run SCENE=$$scene ARGS='-quiet 1' || exit 1; done
+	@$(PYTHON) tools/figures.py
 
 clean:
 	rm -rf build plugin/build meshes/*.msh results
