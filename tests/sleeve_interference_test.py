@@ -1,0 +1,54 @@
+#!/usr/bin/python3
+"""The interference window of the sleeve scenes (docs/parameters.md, sleeve: "interference").
+
+The ring's inner radius (5.0445 cm) is fixed by its mesh; the scan changes the pipe radius
+instead, interference 53 to 57 um (coarse mesh, 600 steps). Asserts the choice written in
+docs/parameters.md: 55 um, the project's default, is the largest interference that keeps the
+paper's first two phases (at least 3 steps of zero force, then at least 5 steps of contact before
+the martensite starts to revert), and 56 um already touches within 2 steps (no zero phase).
+Records, per interference: the first contact step and inner temperature, the reversion start,
+the final pressure (results/checks/sleeve_interference.json).
+"""
+import json
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+from checklib import check, finish, record, rows, run_scene  # noqa: E402
+
+RING_INNER = 0.050445  # m, meshes/sleeve-coarse.msh (Makefile: sleeve_opt_coarse)
+
+
+def main():
+    scan = {}
+    for um in (53, 54, 55, 56, 57):
+        pipe = f"{RING_INNER + um * 1e-6:.9f}"
+        out = run_scene("sleeve-circular", f"sleeve-interference-{um}", "-mesh", "meshes/sleeve-coarse.msh",
+                        "-steps", "600", "-quiet", "1", "-pipeA", pipe, "-pipeB", pipe)
+        hist = rows(os.path.join(out, "history.csv"))
+        contact = next(i for i, r in enumerate(hist) if int(r["contact_nodes"]) > 0)
+        reversion = next(i for i, r in enumerate(hist) if float(r["fraction_austenite"]) > 0)
+        summary = json.load(open(os.path.join(out, "summary.json")))
+        scan[um] = {"first_contact_step": contact + 1, "T_inner_first_contact_K": float(hist[contact]["T_inner_mean"]),
+                    "reversion_step": reversion + 1, "T_inner_reversion_K": float(hist[reversion]["T_inner_mean"]),
+                    "linear_phase_steps": reversion - contact, "final_pressure_Pa": summary["final_pressure_mean"]}
+        print(f"info {um} um: contact at step {contact + 1} ({scan[um]['T_inner_first_contact_K']:.1f} K), "
+              f"reversion from step {reversion + 1} ({scan[um]['T_inner_reversion_K']:.1f} K), final "
+              f"{summary['final_pressure_mean'] / 1e6:.2f} MPa")
+    d = scan[55]
+    check(d["first_contact_step"] - 1 >= 3 and d["linear_phase_steps"] >= 5,
+          f"55 um keeps a zero phase ({d['first_contact_step'] - 1} steps) and a linear phase "
+          f"({d['linear_phase_steps']} steps)")
+    check(scan[56]["first_contact_step"] <= 2,
+          f"56 um touches at step {scan[56]['first_contact_step']}: no zero phase")
+    check(all(scan[a]["first_contact_step"] >= scan[b]["first_contact_step"] for a, b in zip(scan, list(scan)[1:])),
+          "a larger interference never touches later")
+    record("sleeve_interference", {"test": "sleeve_interference", "mesh": "meshes/sleeve-coarse.msh",
+                                   "steps": 600, "ring_inner_radius_m": RING_INNER,
+                                   "scan_um": {str(k): v for k, v in scan.items()}})
+    finish()
+
+
+if __name__ == "__main__":
+    main()
