@@ -12,14 +12,13 @@ Runs edp/scenes/beam.edp into build/test-results/beam and asserts:
     including the continuation to the exact fixed point.
 Writes results/checks/beam_dc_iterations.json and results/checks/dc_lagrangian_decreases.json.
 """
-import csv
 import json
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from checklib import check, finish, record, run_scene  # noqa: E402
+from checklib import check, finish, record, rows, run_scene  # noqa: E402
 
 PAPER = {"coarse": (325, 580), "medium": (808, 1504), "fine": (2527, 4860)}
 
@@ -60,11 +59,11 @@ def main():
         "max_over_min_iterations_to_no_phase_change": max(exact) / min(exact),
         "zone_spread_m1": spread_m1, "zone_spread_m2": spread_m2,})
 
-    rows = list(csv.DictReader(open(os.path.join(out, "dc-convergence.csv"))))
+    convergence = rows(os.path.join(out, "dc-convergence.csv"))
     worst = {}
     for m in meshes:
         seq = [(float(r["lagrangian_after_global"]), float(r["lagrangian_after_local"]))
-               for r in rows if r["mesh"] == m["name"]]
+               for r in convergence if r["mesh"] == m["name"]]
         scale = max(abs(v) for pair in seq for v in pair)
         rises = []
         previous_local = None

@@ -18,22 +18,20 @@ Runs edp/scenes/free-ring.edp with the paper's latent heat and with none, and ch
 Writes results/checks/heat_energy_balance.json, free_ring_transformation.json and
 rannacher_smoothing.json.
 """
-import csv
 import json
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from checklib import check, finish, record, run_scene  # noqa: E402
+from checklib import check, finish, record, rows, run_scene  # noqa: E402
 
 
 def run(name, *args):
     out = run_scene("free-ring", name, *args)
-    with open(os.path.join(out, "history.csv"), newline="") as f:
-        rows = list(csv.DictReader(f))
+    history = rows(os.path.join(out, "history.csv"))
     return json.load(open(os.path.join(out, "summary.json"))), \
-        {k: [float(r[k]) for r in rows] for k in rows[0]}
+        {k: [float(r[k]) for r in history] for k in history[0]}
 
 
 def reverse_temperature(p):

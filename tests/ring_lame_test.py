@@ -7,7 +7,6 @@ to level); recovered pressure uniform within 1 % at about 1200 nodes (l3), and t
 pressures' checkerboard (which the recovery removes) reported beside it.
 Writes results/checks/ring_lame.json.
 """
-import csv
 import json
 import math
 import os
@@ -15,7 +14,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from checklib import check, finish, record, run_scene  # noqa: E402
+from checklib import check, finish, record, rows, run_scene  # noqa: E402
 
 
 def main():
@@ -32,8 +31,7 @@ def main():
     check(default["non_uniformity"] <= 0.01,
           f"recovered pressure uniform within 1 % at {default['nodes']} nodes: (max-min)/mean "
           f"{default['non_uniformity']:.4f}")
-    with open(os.path.join(out, "pressure-l3.csv"), newline="") as f:
-        raw = [float(r["pressure_nodal"]) for r in csv.DictReader(f)]
+    raw = [float(r["pressure_nodal"]) for r in rows(os.path.join(out, "pressure-l3.csv"))]
     raw_spread = (max(raw) - min(raw)) / default["pressure_mean"]
     print(f"raw nodal pressures (force / tributary length) at l3: (max-min)/mean {raw_spread:.4f}")
     record("ring_lame", {"test": "ring_lame", "levels": levels, "orders": orders,
