@@ -6,12 +6,13 @@ Reads results/<scene>/summary.json and PNGs (make figures runs the scenes at the
 results/checks/*.json (written by the tests, which make figures runs too); copies the PNGs it
 shows to docs/figures/. Usage: tools/figures.py  (from the repository root)
 """
-import csv
 import json
 import math
 import os
 import shutil
 import sys
+
+from plot_sleeve import read_csv
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RESULTS = os.path.join(ROOT, "results")
@@ -53,11 +54,16 @@ def coldest_radius(scene, instant="2-contact"):
     if not os.path.exists(path):
         missing.append(path)
         return None
-    with open(path) as f:
-        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
-    radius = [1e3 * math.hypot(float(r["x"]), float(r["y"])) for r in rows]
-    coldest = min(range(len(rows)), key=lambda i: float(rows[i]["T"]))
+    fields = read_csv(path)
+    radius = [1e3 * math.hypot(x, y) for x, y in zip(fields["x"], fields["y"])]
+    coldest = min(range(len(radius)), key=lambda i: fields["T"][i])
     return radius[coldest], min(radius), max(radius)
+
+
+def section(title, scene, paper, pngs):
+    """The head of a figure's entry: its title, the paper's account, our figures."""
+    return [f"## {title}, scene `{scene}`", "", "*Paper:* " + paper, "",
+            *(figure(scene, png) for png in pngs), ""]
 
 
 def verdict(ok):
@@ -80,17 +86,16 @@ def main():
 
     # ---- Beam (Fig. 9-10) ----
     beam = checks("beam_dc_iterations")
-    out += ["## Fig. 9-10: beam in bending (§3.2), scene `beam`", "",
-            "*Paper:* isothermal beam, no contact; both martensites appear, M1 on the tension side and M2 on",
-            "the compression side; the phase zones are stable across the three meshes; DC converges in about",
-            "ten iterations, weakly mesh-dependent.", ""]
-    for png in ("phase-coarse.png", "phase-fine.png", "dc-convergence.png"):
-        out.append(figure("beam", png))
+    out += section("Fig. 9-10: beam in bending (§3.2)", "beam",
+                   "isothermal beam, no contact; both martensites appear, M1 on the tension side and M2 on the "
+                   "compression side; the phase zones are stable across the three meshes; DC converges in "
+                   "about ten iterations, weakly mesh-dependent.",
+                   ["phase-coarse.png", "phase-fine.png", "dc-convergence.png"])
     if beam:
         its = [m["dc_iterations"] for m in beam["meshes"]]
         m1 = [m["fraction_m1"] for m in beam["meshes"]]
         m2 = [m["fraction_m2"] for m in beam["meshes"]]
-        out += ["", f"*Ours:* {verdict(min(m1) > 0 and min(m2) > 0 and max(its) <= 12)}. DC iterations "
+        out += [f"*Ours:* {verdict(min(m1) > 0 and min(m2) > 0 and max(its) <= 12)}. DC iterations "
                 f"{its} on meshes of {[m['nodes'] for m in beam['meshes']]} nodes (paper: about ten); "
                 f"M1 fraction {min(m1):.3f}-{max(m1):.3f}, M2 {min(m2):.3f}-{max(m2):.3f} across the meshes "
                 "(tests/beam_test.py).", ""]
@@ -98,14 +103,12 @@ def main():
     # ---- Circular (Fig. 11-14) ----
     s = summary("sleeve-circular")
     c = checks("sleeve_circular_phases")
-    out += ["## Fig. 11-14: circular pipe, constant g (§4.2.1), scene `sleeve-circular`", "",
-            "*Paper:* quarter ring; the clamping force against temperature in four phases: zero (no contact",
-            "yet), linear in T (contact, still martensite), jerky jumps (martensite to austenite, starting at",
-            "the inner surface, then sudden over the whole ring), constant (austenite). Final force uniform;",
-            "temperature in circular bands.", "",
-            figure("sleeve-circular", "force-temperature.png"),
-            figure("sleeve-circular", "fields-2-contact.png"),
-            figure("sleeve-circular", "fields-3-end.png"), ""]
+    out += section("Fig. 11-14: circular pipe, constant g (§4.2.1)", "sleeve-circular",
+                   "quarter ring; the clamping force against temperature in four phases: zero (no contact "
+                   "yet), linear in T (contact, still martensite), jerky jumps (martensite to austenite, "
+                   "starting at the inner surface, then sudden over the whole ring), constant (austenite). "
+                   "Final force uniform; temperature in circular bands.",
+                   ["force-temperature.png", "fields-2-contact.png", "fields-3-end.png"])
     if s and c:
         out += [f"*Ours:* {verdict(c['passed'])} on the four phases (coarse mesh, tests/sleeve_circular_test.py): "
                 f"zero for {c['first_contact_step'] - 1} steps, linear with R^2 = {c['linear_r2']:.5f} "
@@ -121,10 +124,10 @@ def main():
     # ---- Single precision (Fig. 15-16) ----
     s = summary("sleeve-circular-single")
     c = checks("sleeve_single_precision")
-    out += ["## Fig. 15-16: single precision, scene `sleeve-circular-single`", "",
-            "*Paper:* the same computation in single precision: the phase change starts locally and breaks",
-            "the symmetry; the forces at three points differ.", "",
-            figure("sleeve-circular-single", "force-temperature.png"), ""]
+    out += section("Fig. 15-16: single precision", "sleeve-circular-single",
+                   "the same computation in single precision: the phase change starts locally and breaks the "
+                   "symmetry; the forces at three points differ.",
+                   ["force-temperature.png"])
     if s and c:
         out += [f"*Ours:* {verdict(c['passed'])} on the forces, **does not agree** on the phases. Rounding the "
                 f"{c['coordinates_rounded']} coordinates of the coarse mesh to float makes the three points differ "
@@ -140,12 +143,12 @@ def main():
     # ---- gvar (Fig. 17-20) ----
     s = summary("sleeve-circular-gvar")
     c = checks("sleeve_gvar")
-    out += ["## Fig. 17-20: circular pipe, g = 2000 in contact (§4.2.2), scene `sleeve-circular-gvar`", "",
-            "*Paper:* the phase change is progressive, starting at the ring-pipe interface; the force rises by",
-            "jumps much more regularly; below about -30 C the force is lower than with constant g; it has",
-            "reached its maximum level mid-way through the warming; the final force is uniform, same level.", "",
-            figure("sleeve-circular-gvar", "force-temperature.png"),
-            figure("sleeve-circular-gvar", "fields-2-contact.png"), ""]
+    out += section("Fig. 17-20: circular pipe, g = 2000 in contact (§4.2.2)", "sleeve-circular-gvar",
+                   "the phase change is progressive, starting at the ring-pipe interface; the force rises by "
+                   "jumps much more regularly; below about -30 C the force is lower than with constant g; it "
+                   "has reached its maximum level mid-way through the warming; the final force is uniform, "
+                   "same level.",
+                   ["force-temperature.png", "fields-2-contact.png"])
     if s and c:
         out += [f"*Ours:* {verdict(c['passed'])} (tests/sleeve_gvar_test.py, default mesh). During contact the "
                 f"austenite lies at mean radius {1e3 * c['austenite_radius_m']['gvar']:.2f} mm, inside the "
@@ -160,11 +163,10 @@ def main():
     # ---- Offset (Fig. 21-24) ----
     s = summary("sleeve-offset")
     c = checks("sleeve_offset")
-    out += ["## Fig. 21-24: ring off-centre (§4.3), scene `sleeve-offset`", "",
-            "*Paper:* the ring 0.05 cm off-centre, half ring meshed, point A fixed: the force is still uniform",
-            "and of the same level, the displacements radial, the same four phases.", "",
-            figure("sleeve-offset", "force-temperature.png"),
-            figure("sleeve-offset", "fields-3-end.png"), ""]
+    out += section("Fig. 21-24: ring off-centre (§4.3)", "sleeve-offset",
+                   "the ring 0.05 cm off-centre, half ring meshed, point A fixed: the force is still uniform "
+                   "and of the same level, the displacements radial, the same four phases.",
+                   ["force-temperature.png", "fields-3-end.png"])
     if s and c:
         out += [f"*Ours:* {verdict(c['passed'])} with point A held by a soft spring (tests/sleeve_offset_test.py): "
                 f"the ring slides {1e6 * c['anchor_displacement_m']:.2f} um for a {1e6 * c['offset_m']:.2f} um offset, "
@@ -180,12 +182,11 @@ def main():
     # ---- Elliptic (Fig. 25-28) and with friction (Fig. 29-32) ----
     s = summary("sleeve-elliptic")
     c = checks("sleeve_elliptic")
-    out += ["## Fig. 25-28: elliptic pipe, no friction (§4.4.1), scene `sleeve-elliptic`", "",
-            "*Paper:* ellipse 5.05 (major, vertical) x 5.04 cm: contact starts on the major axis, lifts off",
-            "there (the ring bends) before the minor axis touches; final force nearly uniform, slightly",
-            "higher on the major axis, about 10 % below the circular case; five phases.", "",
-            figure("sleeve-elliptic", "force-temperature.png"),
-            figure("sleeve-elliptic", "fields-2-contact.png"), ""]
+    out += section("Fig. 25-28: elliptic pipe, no friction (§4.4.1)", "sleeve-elliptic",
+                   "ellipse 5.05 (major, vertical) x 5.04 cm: contact starts on the major axis, lifts off "
+                   "there (the ring bends) before the minor axis touches; final force nearly uniform, slightly "
+                   "higher on the major axis, about 10 % below the circular case; five phases.",
+                   ["force-temperature.png", "fields-2-contact.png"])
     if s and c:
         out += [f"*Ours:* {verdict(c['passed'])} (tests/sleeve_elliptic_test.py). First contact on the major axis "
                 f"at step {c['elliptic_first_contact_step']}; its force peaks at "
@@ -199,12 +200,11 @@ def main():
                 "axis never lifts off; the linear phase with the whole ring in contact is missing (the minor "
                 "axis touches only during the reversion).", ""]
     s = summary("sleeve-elliptic-friction")
-    out += ["## Fig. 29-32: elliptic pipe, mu = 0.2 (§4.4.2), scene `sleeve-elliptic-friction`", "",
-            "*Paper:* final force not uniform (14 % between the major and the minor axis, higher on the major",
-            "axis); tangential force about 8 % of the normal; all nodes stick; lift-off only very near the",
-            "major axis.", "",
-            figure("sleeve-elliptic-friction", "force-temperature.png"),
-            figure("sleeve-elliptic-friction", "fields-3-end.png"), ""]
+    out += section("Fig. 29-32: elliptic pipe, mu = 0.2 (§4.4.2)", "sleeve-elliptic-friction",
+                   "final force not uniform (14 % between the major and the minor axis, higher on the major "
+                   "axis); tangential force about 8 % of the normal; all nodes stick; lift-off only very near "
+                   "the major axis.",
+                   ["force-temperature.png", "fields-3-end.png"])
     if s and c:
         out += [f"*Ours:* {verdict(c['passed'])} on what the test asserts: non-uniformity "
                 f"{100 * c['friction_non_uniformity']:.1f} % (in 5-30 %), {c['friction_nodes_sticking']} of "
@@ -219,12 +219,11 @@ def main():
     # ---- Random threshold (Fig. 33-36) ----
     s = summary("sleeve-random-threshold")
     c = checks("sleeve_random_threshold")
-    out += ["## Fig. 33-36: random phase-change threshold (§4.4.3), scene `sleeve-random-threshold`", "",
-            "*Paper:* c drawn per element (normal or uniform around its mean): the phase change is less",
-            "abrupt over the sleeve, the force more chaotic, with a peak about 50 % above the final value;",
-            "the temperature more homogeneous, with minima in the middle of the ring.", "",
-            figure("sleeve-random-threshold", "force-temperature.png"),
-            figure("sleeve-random-threshold", "fields-2-contact.png"), ""]
+    out += section("Fig. 33-36: random phase-change threshold (§4.4.3)", "sleeve-random-threshold",
+                   "c drawn per element (normal or uniform around its mean): the phase change is less abrupt "
+                   "over the sleeve, the force more chaotic, with a peak about 50 % above the final value; the "
+                   "temperature more homogeneous, with minima in the middle of the ring.",
+                   ["force-temperature.png", "fields-2-contact.png"])
     if s and c:
         out += [f"*Ours:* {verdict(c['passed'])} (tests/sleeve_random_threshold_test.py). Transformation "
                 f"temperature T0 drawn per triangle, {s['parameters']['threshold_law']}, standard deviation "
