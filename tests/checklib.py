@@ -40,6 +40,15 @@ def rows(path):
         return list(csv.DictReader(line for line in f if not line.startswith("#")))
 
 
+def sleeve_outputs(out):
+    """What a sleeve scene wrote to `out`: summary.json, and the rows of history.csv, points.csv and
+    contact-final.csv."""
+    return {"summary": json.load(open(os.path.join(out, "summary.json"))),
+            "history": rows(os.path.join(out, "history.csv")),
+            "points": rows(os.path.join(out, "points.csv")),
+            "final": rows(os.path.join(out, "contact-final.csv"))}
+
+
 def r_squared(xs, ys):
     """Coefficient of determination and slope of the least-squares line through (xs, ys)."""
     n = len(xs)

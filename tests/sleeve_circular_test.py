@@ -6,21 +6,19 @@ of SPEC section 6 in order (checklib.four_phases: zero; linear in T with R^2 > 0
 constant), the final pressure uniform along the surface within 1 %, every contact node's force
 >= 0. Writes results/checks/sleeve_circular_phases.json.
 """
-import json
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from checklib import check, finish, four_phases, record, rows, run_scene  # noqa: E402
+from checklib import check, finish, four_phases, record, run_scene, sleeve_outputs  # noqa: E402
 
 
 def main():
     out = run_scene("sleeve-circular", "sleeve-circular", "-mesh", "meshes/sleeve-coarse.msh",
                     "-steps", "600", "-quiet", "1")
-    summary = json.load(open(os.path.join(out, "summary.json")))
-    hist = rows(os.path.join(out, "history.csv"))
-    pts = rows(os.path.join(out, "points.csv"))
+    run = sleeve_outputs(out)
+    summary, hist, pts = run["summary"], run["history"], run["points"]
     T = [float(r["T_x_axis_C"]) for r in pts]
     p = [float(r["pressure_x_axis_GPa"]) * 1e9 for r in pts]
     austenite = [float(r["fraction_austenite"]) for r in hist]
@@ -28,8 +26,7 @@ def main():
     phases = four_phases("x axis", T, p, austenite, first_contact)
     check(summary["final_pressure_non_uniformity"] <= 0.01,
           f"final pressure uniform within 1 %: {summary['final_pressure_non_uniformity']:.4f}")
-    final_contact = rows(os.path.join(out, "contact-final.csv"))
-    check(min(float(r["normal_force"]) for r in final_contact) >= 0, "normal forces >= 0")
+    check(min(float(r["normal_force"]) for r in run["final"]) >= 0, "normal forces >= 0")
     record("sleeve_circular_phases", dict(
         phases, test="sleeve_circular_phases", mesh="meshes/sleeve-coarse.msh", steps=len(p),
         final_pressure_Pa=summary["final_pressure_mean"],

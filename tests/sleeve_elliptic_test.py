@@ -17,13 +17,12 @@ sleeve-elliptic-friction (mu = 0.2):
 Writes results/checks/sleeve_elliptic.json. These need the default mesh: on the coarse one
 (6 layers) the major axis never lifts off.
 """
-import json
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from checklib import check, finish, record, rows, run_scene  # noqa: E402
+from checklib import check, finish, record, run_scene, sleeve_outputs  # noqa: E402
 
 
 def pressures(points, name):
@@ -33,10 +32,7 @@ def pressures(points, name):
 def main():
     runs = {}
     for scene in ("sleeve-circular", "sleeve-elliptic", "sleeve-elliptic-friction"):
-        out = run_scene(scene, scene + "-default", "-quiet", "1")
-        runs[scene] = {"summary": json.load(open(os.path.join(out, "summary.json"))),
-                       "points": rows(os.path.join(out, "points.csv")),
-                       "final": rows(os.path.join(out, "contact-final.csv"))}
+        runs[scene] = sleeve_outputs(run_scene(scene, scene + "-default", "-quiet", "1"))
 
     # ---- sleeve-elliptic: where contact starts, the lift-off, the final level ----
     ell = runs["sleeve-elliptic"]

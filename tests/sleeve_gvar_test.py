@@ -18,14 +18,13 @@ Asserts:
   - the same final level (within 1e-6) and uniform within 1 %.
 Writes results/checks/sleeve_gvar.json.
 """
-import json
 import math
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from checklib import check, finish, record, rows, run_scene  # noqa: E402
+from checklib import check, finish, record, rows, run_scene, sleeve_outputs  # noqa: E402
 
 
 def load(out):
@@ -33,9 +32,9 @@ def load(out):
     radius = {0: [], 1: []}
     for r in fields:
         radius[float(r["phase"]) != 0].append(math.hypot(float(r["x"]), float(r["y"])))
-    return {"summary": json.load(open(os.path.join(out, "summary.json"))),
-            "history": [(float(r["T_inner_mean"]) - 273.15, float(r["pressure_mean"]))
-                        for r in rows(os.path.join(out, "history.csv"))],
+    run = sleeve_outputs(out)
+    return {"summary": run["summary"],
+            "history": [(float(r["T_inner_mean"]) - 273.15, float(r["pressure_mean"])) for r in run["history"]],
             "austenite_radius": sum(radius[0]) / len(radius[0]),
             "martensite_radius": sum(radius[1]) / max(1, len(radius[1]))}
 

@@ -9,13 +9,12 @@ the martensite starts to revert), and 56 um already touches within 2 steps (no z
 Records, per interference: the first contact step and inner temperature, the reversion start,
 the final pressure (results/checks/sleeve_interference.json).
 """
-import json
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from checklib import check, finish, record, rows, run_scene  # noqa: E402
+from checklib import check, finish, record, run_scene, sleeve_outputs  # noqa: E402
 
 RING_INNER = 0.050445  # m, meshes/sleeve-coarse.msh (Makefile: sleeve_opt_coarse)
 
@@ -26,10 +25,10 @@ def main():
         pipe = f"{RING_INNER + um * 1e-6:.9f}"
         out = run_scene("sleeve-circular", f"sleeve-interference-{um}", "-mesh", "meshes/sleeve-coarse.msh",
                         "-steps", "600", "-quiet", "1", "-pipeA", pipe, "-pipeB", pipe)
-        hist = rows(os.path.join(out, "history.csv"))
+        run = sleeve_outputs(out)
+        hist, summary = run["history"], run["summary"]
         contact = next(i for i, r in enumerate(hist) if int(r["contact_nodes"]) > 0)
         reversion = next(i for i, r in enumerate(hist) if float(r["fraction_austenite"]) > 0)
-        summary = json.load(open(os.path.join(out, "summary.json")))
         scan[um] = {"first_contact_step": contact + 1, "T_inner_first_contact_K": float(hist[contact]["T_inner_mean"]),
                     "reversion_step": reversion + 1, "T_inner_reversion_K": float(hist[reversion]["T_inner_mean"]),
                     "linear_phase_steps": reversion - contact, "final_pressure_Pa": summary["final_pressure_mean"]}

@@ -12,29 +12,22 @@
   the final force varies around the ring (the paper's "A fixed" read literally).
 Writes results/checks/sleeve_offset.json.
 """
-import json
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from checklib import check, finish, four_phases, record, rows, run_scene  # noqa: E402
+from checklib import check, finish, four_phases, record, run_scene, sleeve_outputs  # noqa: E402
 
 HALF = ["-mesh", "meshes/sleeve-half-coarse.msh", "-steps", "600", "-quiet", "1"]
 
 
-def load(out):
-    return {"summary": json.load(open(os.path.join(out, "summary.json"))),
-            "points": rows(os.path.join(out, "points.csv")),
-            "history": rows(os.path.join(out, "history.csv"))}
-
-
 def main():
-    quarter = load(run_scene("sleeve-circular", "sleeve-offset-quarter", "-mesh", "meshes/sleeve-coarse.msh",
+    quarter = sleeve_outputs(run_scene("sleeve-circular", "sleeve-offset-quarter", "-mesh", "meshes/sleeve-coarse.msh",
                              "-steps", "600", "-quiet", "1"))
-    centred = load(run_scene("sleeve-offset", "sleeve-offset-centred", *HALF, "-offset", "0"))
-    offset = load(run_scene("sleeve-offset", "sleeve-offset", *HALF))
-    fixed = load(run_scene("sleeve-offset", "sleeve-offset-fixed-A", *HALF, "-anchor", "1e3"))
+    centred = sleeve_outputs(run_scene("sleeve-offset", "sleeve-offset-centred", *HALF, "-offset", "0"))
+    offset = sleeve_outputs(run_scene("sleeve-offset", "sleeve-offset", *HALF))
+    fixed = sleeve_outputs(run_scene("sleeve-offset", "sleeve-offset-fixed-A", *HALF, "-anchor", "1e3"))
 
     q, c = quarter["summary"]["final_pressure_mean"], centred["summary"]["final_pressure_mean"]
     check(abs(c / q - 1) < 1e-6, f"half ring, centred pipe = quarter ring: {c / 1e6:.6f} vs {q / 1e6:.6f} MPa")

@@ -8,22 +8,21 @@ symmetry: the three forces must differ by more than 1 % at some step. Also recor
 spread at the end, and how far the phase fractions of the two runs differ (the phase zones).
 Writes results/checks/sleeve_single_precision.json.
 """
-import json
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from checklib import check, finish, record, rows, run_scene  # noqa: E402
+from checklib import check, finish, record, run_scene, sleeve_outputs  # noqa: E402
 
 POINTS = ("x_axis", "diagonal", "y_axis")
 COMMON = ["-mesh", "meshes/sleeve-coarse.msh", "-steps", "600", "-quiet", "1"]
 
 
-def spreads(out):
+def spreads(points):
     """(max - min) / max of the three points' force, at every step where one of them touches."""
     result = []
-    for r in rows(os.path.join(out, "points.csv")):
+    for r in points:
         p = [float(r[f"pressure_{n}_GPa"]) for n in POINTS]
         if max(p) > 0:
             result.append(((max(p) - min(p)) / max(p), int(r["step"])))
@@ -31,10 +30,10 @@ def spreads(out):
 
 
 def main():
-    double = run_scene("sleeve-circular", "sleeve-circular-double", *COMMON)
-    single = run_scene("sleeve-circular-single", "sleeve-circular-single", *COMMON)
-    s_double, s_single = spreads(double), spreads(single)
-    rounded = json.load(open(os.path.join(single, "summary.json")))["coordinates_rounded"]
+    double = sleeve_outputs(run_scene("sleeve-circular", "sleeve-circular-double", *COMMON))
+    single = sleeve_outputs(run_scene("sleeve-circular-single", "sleeve-circular-single", *COMMON))
+    s_double, s_single = spreads(double["points"]), spreads(single["points"])
+    rounded = single["summary"]["coordinates_rounded"]
     check(rounded > 0, f"single precision moved {rounded} coordinates")
     worst_double, worst_single = max(s_double), max(s_single)
     check(worst_double[0] <= 1e-6, f"double precision: the three points agree within "
@@ -43,7 +42,7 @@ def main():
           f"{100 * worst_single[0]:.1f} % > 1 % (at step {worst_single[1]}); at the end "
           f"{s_single[-1][0]:.1e}")
     phases = [(abs(float(a["fraction_austenite"]) - float(b["fraction_austenite"])))
-              for a, b in zip(rows(os.path.join(double, "history.csv")), rows(os.path.join(single, "history.csv")))]
+              for a, b in zip(double["history"], single["history"])]
     print(f"info phase fractions of the two runs differ by at most {max(phases):.1e}: the phase "
           f"zones stay circular")
     record("sleeve_single_precision", {
