@@ -8,7 +8,7 @@ set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
 
 packages="freefem++ libfreefem++-dev gmsh libeigen3-dev libgtest-dev libsiconos-numerics-dev cmake make g++
-python3-matplotlib python3-numpy"
+python3-matplotlib python3-numpy python3-vtk9 openmpi-bin"
 
 missing=""
 for p in $packages; do
