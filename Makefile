@@ -63,12 +63,15 @@ meshes/ring-%.msh: meshes/ring.geo
 meshes/sleeve-%.msh: meshes/ring.geo
 	$(call gmsh_mesh,sleeve)
 
+# SCENE reaches the shell through the environment, never pasted into the recipe, so that quotes
+# or backquotes in it are only characters (docs/errors.md).
+check-scene: export SCENE_NAME := $(value SCENE)
 check-scene:
-	@if [[ ! "$(SCENE)" =~ ^[A-Za-z0-9_-]+$$ ]]; then \
-	  echo "error: SCENE='$(SCENE)' is not a scene name (letters, digits, - and _ only)" >&2; \
+	@if [[ ! "$$SCENE_NAME" =~ ^[A-Za-z0-9_-]+$$ ]]; then \
+	  echo "error: SCENE='$$SCENE_NAME' is not a scene name (letters, digits, - and _ only)" >&2; \
 	  echo "scenes: $(SCENES)" >&2; exit 2; fi
-	@if [[ " $(SCENES) " != *" $(SCENE) "* ]]; then \
-	  echo "error: unknown scene '$(SCENE)'" >&2; echo "scenes: $(SCENES)" >&2; exit 2; fi
+	@if [[ " $(SCENES) " != *" $$SCENE_NAME "* ]]; then \
+	  echo "error: unknown scene '$$SCENE_NAME'" >&2; echo "scenes: $(SCENES)" >&2; exit 2; fi
 
 run: check-scene plugin meshes
 	$(FF) edp/scenes/$(SCENE).edp $(ARGS)
