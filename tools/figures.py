@@ -44,7 +44,9 @@ def figure(scene, png):
         return f"*(missing: results/{scene}/{png})*"
     os.makedirs(os.path.join(DOCS, "figures"), exist_ok=True)
     name = f"{scene}-{png}"
-    shutil.copyfile(src, os.path.join(DOCS, "figures", name))
+    dst = os.path.join(DOCS, "figures", name)
+    shutil.copyfile(src, dst + ".partial")  # then renamed: never a half-copied figure
+    os.replace(dst + ".partial", dst)
     return f"![{scene} {png}](figures/{name})"
 
 

@@ -42,6 +42,7 @@ def main():
     bx.legend(fontsize=8)
     partial = os.path.join(outdir, "temperature.partial.png")
     fig.savefig(partial, dpi=120, bbox_inches="tight")
+    plt.close(fig)
     os.replace(partial, os.path.join(outdir, "temperature.png"))
 
 

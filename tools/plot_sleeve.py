@@ -28,6 +28,14 @@ def read_csv(path, skip_comment=True):
     return {k: [float(r[k]) for r in rows] for k in rows[0]}
 
 
+def save(fig, path, dpi):
+    """Writes the PNG under a temporary name, then renames it: never a half-drawn file."""
+    partial = path[:-len(".png")] + ".partial.png"
+    fig.savefig(partial, dpi=dpi)
+    plt.close(fig)
+    os.replace(partial, path)
+
+
 def force_temperature(outdir, scene):
     p = read_csv(os.path.join(outdir, "points.csv"))
     fig, ax = plt.subplots(figsize=(7, 4.5))
@@ -42,8 +50,7 @@ def force_temperature(outdir, scene):
     ax.legend(fontsize=8)
     ax.grid(alpha=0.3)
     fig.tight_layout()
-    fig.savefig(os.path.join(outdir, "force-temperature.png"), dpi=120)
-    plt.close(fig)
+    save(fig, os.path.join(outdir, "force-temperature.png"), 120)
 
 
 def iterations(outdir, scene):
@@ -59,8 +66,7 @@ def iterations(outdir, scene):
     ax.set_title(f"{scene}: iterations per step")
     ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(os.path.join(outdir, "iterations.png"), dpi=120)
-    plt.close(fig)
+    save(fig, os.path.join(outdir, "iterations.png"), 120)
 
 
 def fields(outdir, scene):
@@ -88,8 +94,7 @@ def fields(outdir, scene):
         instant = os.path.basename(path)[len("fields-"):-len(".csv")]
         fig.suptitle(f"{scene}: {instant} ({when})")
         fig.tight_layout()
-        fig.savefig(path[:-4] + ".png", dpi=110)
-        plt.close(fig)
+        save(fig, path[:-4] + ".png", 110)
 
 
 def main():
