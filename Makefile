@@ -19,7 +19,9 @@ PLUGIN_SOURCES := plugin/sma.cpp $(wildcard plugin/core/*.hpp)
 BEAM_MESHES := meshes/beam-coarse.msh meshes/beam-medium.msh meshes/beam-fine.msh
 RING_MESHES := meshes/ring-coarse.msh meshes/ring-l1.msh meshes/ring-l2.msh meshes/ring-l3.msh meshes/ring-l4.msh
 SLEEVE_MESHES := meshes/sleeve-coarse.msh meshes/sleeve-quarter.msh meshes/sleeve-half-coarse.msh meshes/sleeve-half.msh
-MESHES := $(BEAM_MESHES) $(RING_MESHES) $(SLEEVE_MESHES)
+# Quarter rings with nearly degenerate triangles (docs/stability.md, case 6).
+SLIVER_MESHES := meshes/sliver-thin.msh meshes/sliver-degenerate.msh
+MESHES := $(BEAM_MESHES) $(RING_MESHES) $(SLEEVE_MESHES) $(SLIVER_MESHES)
 beam_opt_coarse := -setnumber lc 0.0021
 beam_opt_medium := -setnumber lc 0.00125
 beam_opt_fine := -setnumber lc 0.0007
@@ -33,6 +35,8 @@ sleeve_opt_coarse := -setnumber Ri 0.050445 -setnumber nr 6
 sleeve_opt_quarter := -setnumber Ri 0.050445 -setnumber nr 18
 sleeve_opt_half-coarse := $(sleeve_opt_coarse) -setnumber half 1
 sleeve_opt_half := $(sleeve_opt_quarter) -setnumber half 1
+sliver_opt_thin := -setnumber eps 1.3e-5
+sliver_opt_degenerate := -setnumber eps 1e-8
 
 .PHONY: run test figures deps plugin meshes clean check-scene
 # The scenes behind the paper's figures (docs/figures.md), run at their defaults by make figures.
@@ -62,6 +66,8 @@ meshes/ring-%.msh: meshes/ring.geo
 	$(call gmsh_mesh,ring)
 meshes/sleeve-%.msh: meshes/ring.geo
 	$(call gmsh_mesh,sleeve)
+meshes/sliver-%.msh: meshes/sliver.geo
+	$(call gmsh_mesh,sliver)
 
 # SCENE reaches the shell through the environment, never pasted into the recipe, so that quotes
 # or backquotes in it are only characters (docs/errors.md).
