@@ -2,6 +2,7 @@
 #   make run  [SCENE=<scene>] [ARGS='-name value ...']   install, build, run a scene, draw its figures
 #   make test                                            install, build, pass every test (ctest)
 #   make figures                                         every paper figure beside ours: docs/figures.md
+#   make bench                                           speed against error: docs/benchmarks.md
 SHELL := /bin/bash
 .DEFAULT_GOAL := run
 
@@ -35,10 +36,15 @@ sleeve_opt_coarse := -setnumber Ri 0.050445 -setnumber nr 6
 sleeve_opt_quarter := -setnumber Ri 0.050445 -setnumber nr 18
 sleeve_opt_half-coarse := $(sleeve_opt_coarse) -setnumber half 1
 sleeve_opt_half := $(sleeve_opt_quarter) -setnumber half 1
+# The benchmarks' extra levels of the quarter ring (nr 6 and 18 are sleeve-coarse, sleeve-quarter).
+BENCH_MESHES := meshes/sleeve-nr9.msh meshes/sleeve-nr12.msh meshes/sleeve-nr27.msh
+sleeve_opt_nr9 := -setnumber Ri 0.050445 -setnumber nr 9
+sleeve_opt_nr12 := -setnumber Ri 0.050445 -setnumber nr 12
+sleeve_opt_nr27 := -setnumber Ri 0.050445 -setnumber nr 27
 sliver_opt_thin := -setnumber eps 1.3e-5
 sliver_opt_degenerate := -setnumber eps 1e-8
 
-.PHONY: run test figures deps plugin meshes clean check-scene
+.PHONY: run test figures bench deps plugin meshes clean check-scene
 # The scenes behind the paper's figures (docs/figures.md), run at their defaults by make figures.
 FIGURE_SCENES := beam sleeve-circular sleeve-circular-single sleeve-circular-gvar sleeve-offset \
                  sleeve-elliptic sleeve-elliptic-friction sleeve-random-threshold
@@ -90,6 +96,10 @@ test: plugin meshes
 	  { mkdir -p build; cmake -S . -B build -DCMAKE_BUILD_TYPE=Release; }
 	@cmake --build build -j2
 	@cd build && ctest --output-on-failure -j2
+
+# Speed against error, all measured in one run: docs/benchmarks.md, results/bench/summary.json.
+bench: plugin meshes $(BENCH_MESHES)
+	@$(PYTHON) tools/bench.py
 
 figures: test
 	@for scene in $(FIGURE_SCENES); do \
