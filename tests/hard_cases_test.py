@@ -1,0 +1,305 @@
+#!/usr/bin/python3
+"""Hard cases of the sleeve program (issue 6, item 4; docs/stability.md): each converges to a
+checked answer or fails loudly naming the loop or the culprit. Coarse mesh (6 layers), 300 steps
+unless said otherwise; about 40 s.
+
+1. Grazing contact: pipe radius equal to the ring's inner radius (interference 0), and +-0.1 um.
+   Interference 0: final pressure 0 (Lame with delta = 0) to 1e-9 of the 55 um fit, no
+   penetration, complementarity, no change of the contact set once the ring is austenite for good;
+   +0.1 um: the final pressure is the 55 um one scaled by 0.1/55 (the final state is linear
+   elastic) to 1e-6; -0.1 um: never touches.
+2. Friction mu = 0.5 and 1.0 beside 0 and 0.2 (sleeve-elliptic-friction): every node inside the
+   Coulomb cone |t| <= mu n (1 + 1e-8), Signorini from the end displacement (no penetration,
+   gap 0 where the normal force is > 0), a node that slipped over the last step is on the cone
+   with its force opposing the slip; the mean pressure does not depend on mu (within 1e-4: the
+   fit's axisymmetric mode is set by the mean interference, friction only redistributes).
+3. Large steps: 150 and 15 steps against 1500: the same final pressure (all austenite, elastic)
+   to 1e-9, Lame's within 1e-3; iteration counts and what the curve loses are recorded.
+4. Single precision: tests/sleeve_single_precision_test.py (final pressure check added there).
+5. Random threshold, spread 20 K: fails loudly (the heat-phase fixed point, its iteration count and
+   residual named); with -fprelax 1 every cycle is resolved to the fixed-point tolerance and the
+   run ends at the homogeneous final pressure; without a cycle -fprelax 1 changes no byte.
+6. Slivers (meshes/sliver.geo): a layer of quality 0.011 converges to Lame within 2e-3; a layer of
+   quality 9e-6 (area 7e-6 of the mean) is rejected up front naming the triangle; raising
+   -meshminquality above 0.011 rejects the first one too.
+Writes results/checks/hard_cases.json.
+"""
+import math
+import os
+import re
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+from checklib import ROOT, TEST_RESULTS, check, finish, record, run_scene, sleeve_outputs  # noqa: E402
+
+COARSE = ["-mesh", "meshes/sleeve-coarse.msh", "-quiet", "1"]
+RING_INNER = 0.050445   # m, meshes/sleeve-coarse.msh and sliver-*.msh
+THICKNESS = 0.01        # m (meshes/ring.geo, sliver.geo)
+INTERFERENCE = 55e-6    # m, the sleeve scenes' default (pipe 5.05 cm)
+
+
+def lame_pressure(E, nu, Ri, Ro, delta):
+    """Contact pressure of a thick ring (plane strain) forced open by delta at Ri on a rigid shaft."""
+    lam, mu = E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu))
+    A = delta / (Ri + (lam + mu) * Ro ** 2 / (mu * Ri))
+    B = (lam + mu) * A * Ro ** 2 / mu
+    return -(2 * (lam + mu) * A - 2 * mu * B / Ri ** 2)
+
+
+def run_failing(scene, out_name, *args):
+    """Runs a scene that may fail; returns (exit code, stderr)."""
+    out = os.path.join(TEST_RESULTS, out_name)
+    done = subprocess.run([os.path.join(ROOT, "tools", "ff"), f"edp/scenes/{scene}.edp", "-out", out, *args],
+                          cwd=ROOT, capture_output=True, text=True)
+    return done.returncode, done.stderr + done.stdout
+
+
+def ellipse_gap(px, py, A, B):
+    """Signed distance from (px, py) to the ellipse (x/A)^2 + (y/B)^2 = 1 (negative inside) and the
+    ellipse's outward normal at the nearest point; the plugin's ObstacleGap, recomputed by bisection."""
+    x, y = abs(px), abs(py)
+    f = lambda t: (B * B - A * A) * math.sin(t) * math.cos(t) + A * x * math.sin(t) - B * y * math.cos(t)
+    lo, hi = 0.0, math.pi / 2
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if f(mid) < 0:
+            lo = mid
+        else:
+            hi = mid
+    t = 0.5 * (lo + hi)
+    qx, qy = A * math.cos(t), B * math.sin(t)
+    nx, ny = qx / A ** 2, qy / B ** 2
+    nn = math.hypot(nx, ny)
+    inside = (x / A) ** 2 + (y / B) ** 2 - 1
+    d = math.hypot(x - qx, y - qy)
+    return (-d if inside < 0 else d), math.copysign(nx / nn, px), math.copysign(ny / nn, py)
+
+
+def contact_state(out, run):
+    """Per contact node at the end: normal force and w_n = n.u + gap (>= 0: admissible, 0: touching),
+    from fields-3-end.vtu's displacement and the pipe of summary.json."""
+    import vtk
+    from vtk.util.numpy_support import vtk_to_numpy
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(os.path.join(out, "fields-3-end.vtu"))
+    reader.Update()
+    grid = reader.GetOutput()
+    points = vtk_to_numpy(grid.GetPoints().GetData())
+    disp = vtk_to_numpy(grid.GetPointData().GetArray("displacement"))
+    par = run["summary"]["parameters"]
+    result = []
+    for r in run["final"]:
+        x, y = float(r["x"]), float(r["y"])
+        i = int(((points[:, 0] - x) ** 2 + (points[:, 1] - y) ** 2).argmin())  # the VTU holds floats
+        gap, nx, ny = ellipse_gap(x, y, par["pipe_A"], par["pipe_B"])
+        result.append((float(r["normal_force"]), nx * disp[i][0] + ny * disp[i][1] + gap))
+    return result
+
+
+def signorini(label, state, tol):
+    """No penetration anywhere (w_n >= -tol) and touching (|w_n| <= tol) where the normal force is > 0."""
+    worst_pen = min(w for _, w in state)
+    worst_gap = max((abs(w) for n, w in state if n > 0), default=0.0)
+    check(worst_pen >= -tol, f"{label}: no penetration, min n.u + gap = {worst_pen:.2e} m >= -{tol:.0e}")
+    check(worst_gap <= tol, f"{label}: complementarity, |n.u + gap| <= {worst_gap:.2e} m <= {tol:.0e} "
+          f"where the normal force is > 0 ({sum(n > 0 for n, _ in state)} of {len(state)} nodes)")
+    return {"min_gap_m": worst_pen, "max_gap_in_contact_m": worst_gap}
+
+
+def iteration_stats(hist):
+    cols = ("fixed_point_iterations", "slip_iterations", "dc_iterations", "psor_sweeps")
+    return {c: {"max": max(float(r[c]) for r in hist), "mean": sum(float(r[c]) for r in hist) / len(hist)}
+            for c in cols}
+
+
+def grazing(reference):
+    print("== 1. grazing contact")
+    p55 = reference["summary"]["final_pressure_mean"]
+    runs = {}
+    for name, delta in (("zero", 0.0), ("plus", 1e-7), ("minus", -1e-7)):
+        pipe = f"{RING_INNER + delta:.10f}"
+        out = run_scene("sleeve-circular", f"hard-grazing-{name}", *COARSE, "-steps", "300",
+                        "-pipeA", pipe, "-pipeB", pipe)
+        runs[name] = (out, sleeve_outputs(out))
+    out, zero = runs["zero"]
+    s = zero["summary"]
+    pmax = max(abs(float(r["pressure"])) for r in zero["final"])
+    check(pmax <= 1e-9 * p55, f"interference 0: final pressure {pmax:.2e} Pa <= 1e-9 x the 55 um fit's "
+          f"{p55 / 1e6:.4f} MPa (Lame with delta = 0: 0)")
+    tol = 1e-6 * INTERFERENCE
+    sig = signorini("interference 0", contact_state(out, zero), tol)
+    counts = [int(r["contact_nodes"]) for r in zero["history"]]
+    changes = [i + 2 for i, (a, b) in enumerate(zip(counts, counts[1:])) if a != b]
+    settled = s["austenite_step"]
+    check(settled > 0 and all(c <= settled for c in changes),
+          f"interference 0: the contact set changes {len(changes)} times (steps {changes}), never after the "
+          f"ring is austenite for good (step {settled}); loops converged: fixed point <= "
+          f"{s['fixed_point_iterations_max']}, DC <= {s['dc_iterations_max']}, PSOR <= {s['psor_sweeps_max']:.0f}")
+    plus = runs["plus"][1]["summary"]["final_pressure_mean"]
+    scale = plus / p55 / (1e-7 / INTERFERENCE) - 1
+    check(abs(scale) <= 1e-6, f"+0.1 um: final pressure {plus:.2f} Pa = the 55 um fit x 0.1/55 to "
+          f"{scale:.1e} (linear elastic final state)")
+    minus = runs["minus"][1]
+    never = max(float(r["pressure_max"]) for r in minus["history"])
+    check(minus["summary"]["first_contact_step"] == -1 and never == 0,
+          f"-0.1 um clearance: never touches (largest pressure over the run {never} Pa)")
+    return {"interference_0": dict(sig, final_pressure_max_Pa=pmax, contact_set_changes_at_steps=changes,
+                                   austenite_step=settled, first_contact_step=s["first_contact_step"],
+                                   iterations=iteration_stats(zero["history"])),
+            "plus_0p1um_final_pressure_Pa": plus, "plus_0p1um_scaling_error": scale,
+            "reference_55um_final_pressure_Pa": p55}
+
+
+def friction():
+    print("== 2. high friction (elliptic pipe)")
+    runs = {mu: sleeve_outputs(run_scene("sleeve-elliptic-friction", f"hard-friction-{mu}", *COARSE,
+                                         "-steps", "300", "-mu", mu))
+            for mu in ("0", "0.2", "0.5", "1.0")}
+    result = {}
+    base = runs["0"]["summary"]["final_pressure_mean"]
+    for mu_text, run in runs.items():
+        mu, s = float(mu_text), run["summary"]
+        out = os.path.join(TEST_RESULTS, f"hard-friction-{mu_text}")
+        entry = {"final_pressure_mean_Pa": s["final_pressure_mean"],
+                 "non_uniformity": s["final_pressure_non_uniformity"],
+                 "tangential_over_normal_max": s["final_tangential_over_normal"],
+                 "iterations": iteration_stats(run["history"])}
+        entry.update(signorini(f"mu {mu_text}", contact_state(out, run), 1e-6 * INTERFERENCE))
+        if mu > 0:
+            n = [float(r["normal_force"]) for r in run["final"]]
+            t = [float(r["tangential_force"]) for r in run["final"]]
+            slip = [float(r["slip_last_step"]) for r in run["final"]]
+            ratio = max(abs(b) / (mu * a) if a > 0 else (math.inf if b != 0 else 0) for a, b in zip(n, t))
+            check(ratio <= 1 + 1e-8, f"mu {mu_text}: Coulomb cone, max |t|/(mu n) = {ratio:.6f} <= 1 + 1e-8")
+            slipping = [i for i, d in enumerate(slip) if abs(d) > 1e-12]
+            consistent = all(abs(t[i]) >= (1 - 1e-6) * mu * n[i] and t[i] * slip[i] < 0 for i in slipping)
+            check(consistent, f"mu {mu_text}: {len(n) - len(slipping)} nodes stick, {len(slipping)} slipped over "
+                  f"the last step, each of those on the cone with its force opposing the slip")
+            entry.update(max_cone_ratio=ratio, nodes_sticking=len(n) - len(slipping), nodes=len(n))
+        change = s["final_pressure_mean"] / base - 1
+        check(abs(change) <= 1e-4, f"mu {mu_text}: mean pressure {s['final_pressure_mean'] / 1e6:.5f} MPa, "
+              f"{change:+.1e} from mu = 0; non-uniformity {100 * s['final_pressure_non_uniformity']:.1f} %, "
+              f"slip-threshold iterations <= {s['slip_threshold_iterations_max']}, DC <= {s['dc_iterations_max']}")
+        result[mu_text] = entry
+    return result
+
+
+def large_steps(fine, E, nu):
+    print("== 3. large time steps")
+    runs = {"1500": fine}
+    for n in ("150", "15"):
+        runs[n] = sleeve_outputs(run_scene("sleeve-circular", f"hard-steps-{n}", *COARSE, "-steps", n))
+    lame = lame_pressure(E, nu, RING_INNER, RING_INNER + THICKNESS, INTERFERENCE)
+    ref = fine["summary"]["final_pressure_mean"]
+    result = {"lame_Pa": lame}
+    for n, run in runs.items():
+        s = run["summary"]
+        dt = s["parameters"]["dt"]
+        diff = s["final_pressure_mean"] / ref - 1
+        check(abs(diff) <= 1e-9, f"{n} steps (dt {dt} s): final pressure {s['final_pressure_mean'] / 1e6:.6f} MPa, "
+              f"{diff:.1e} from 1500 steps")
+        err = s["final_pressure_mean"] / lame - 1
+        check(abs(err) <= 1e-3, f"{n} steps: {err:.2e} from Lame's {lame / 1e6:.6f} MPa (coarse mesh)")
+        hist = run["history"]
+        reversion = next((i + 1 for i, r in enumerate(hist) if float(r["fraction_austenite"]) > 0), -1)
+        first = s["first_contact_step"]
+        entry = {"dt_s": dt, "final_pressure_Pa": s["final_pressure_mean"], "lame_error": err,
+                 "first_contact_step": first, "first_contact_time_s": first * dt,
+                 "T_inner_first_contact_C": s["T_inner_first_contact"] - 273.15,
+                 "reversion_step": reversion, "austenite_step": s["austenite_step"],
+                 "T_inner_austenite_C": s["T_inner_austenite"] - 273.15,
+                 "linear_phase_steps": reversion - first, "peak_pressure_Pa": s["peak_pressure_mean"],
+                 "iterations": iteration_stats(hist)}
+        print(f"info {n} steps: contact at {first * dt:.1f} s ({entry['T_inner_first_contact_C']:.2f} C inner), "
+              f"{entry['linear_phase_steps']} steps of linear phase, austenite for good at "
+              f"{s['austenite_step'] * dt:.1f} s ({entry['T_inner_austenite_C']:.2f} C); per step at most "
+              f"{s['fixed_point_iterations_max']} fixed-point, {s['dc_iterations_max']} DC, "
+              f"{s['psor_sweeps_max']:.0f} PSOR sweeps")
+        result[n] = entry
+    return result
+
+
+NOTE = re.compile(r"note: DCT fixed point cycled \(period 2, (\d+) triangles flip\); their latent fraction held "
+                  r"at lambda (\S+) to (\S+) after (\d+) bisections, relative change of T (\S+)")
+
+
+def random_threshold(reference):
+    print("== 5. random threshold, spread 20 K")
+    args = ["-mesh", "meshes/sleeve-coarse.msh", "-quiet", "1", "-steps", "300", "-cspread", "20"]
+    code, err = run_failing("sleeve-random-threshold", "hard-random-20", *args)
+    m = re.search(r"error: DCT fixed point \(heat <-> phases\) did not converge: (\d+) iterations, relative "
+                  r"change of T (\S+) > tol (\S+)", err)
+    check(code != 0 and m is not None and int(m.group(1)) == 30 and float(m.group(2)) > float(m.group(3)),
+          f"without -fprelax: fails loudly (exit {code}): "
+          + (m.group(0) if m else "no 'DCT fixed point ... did not converge' message"))
+    result = {"loud_failure": m.group(0) if m else None, "exit_code": code}
+    code, err = run_failing("sleeve-random-threshold", "hard-random-20-relax", *args, "-fprelax", "1")
+    notes = [(int(a), float(b), float(c), int(d), float(e)) for a, b, c, d, e in NOTE.findall(err)]
+    check(code == 0 and len(notes) > 0, f"with -fprelax 1: exit {code}, {len(notes)} cycles resolved")
+    if code == 0 and notes:
+        run = sleeve_outputs(os.path.join(TEST_RESULTS, "hard-random-20-relax"))
+        worst = max(n[4] for n in notes)
+        check(worst <= 1e-8, f"each cycle resolved to the fixed-point tolerance: relative change of T <= "
+              f"{worst:.1e}; flipping triangles per cycle {sorted(set(n[0] for n in notes))}, bisections "
+              f"{min(n[3] for n in notes)}-{max(n[3] for n in notes)}, lambda {min(n[1] for n in notes):.4f}-"
+              f"{max(n[2] for n in notes):.4f}")
+        final, homogeneous = run["summary"]["final_pressure_mean"], reference["summary"]["final_pressure_mean"]
+        check(run["summary"]["austenite_step"] > 0 and abs(final / homogeneous - 1) <= 1e-9,
+              f"ends all austenite at the homogeneous ring's pressure: {final / 1e6:.6f} vs "
+              f"{homogeneous / 1e6:.6f} MPa")
+        result.update(cycles=len(notes), max_residual=worst, final_pressure_Pa=final,
+                      bisections=[n[3] for n in notes], lambdas=[n[1] for n in notes],
+                      T_inner_austenite_C=run["summary"]["T_inner_austenite"] - 273.15)
+    same_out = run_scene("sleeve-circular", "hard-relax-no-cycle", *COARSE, "-steps", "300", "-fprelax", "1")
+    ref_out = os.path.join(TEST_RESULTS, "hard-reference-300")
+    same = [f for f in ("history.csv", "points.csv", "contact-final.csv", "fields-3-end.csv")
+            if open(os.path.join(same_out, f), "rb").read() == open(os.path.join(ref_out, f), "rb").read()]
+    check(len(same) == 4, f"sleeve-circular (no cycle) with -fprelax 1: {len(same)} of 4 files byte-identical")
+    result["byte_identical_without_cycle"] = same
+    return result
+
+
+def slivers(E, nu):
+    print("== 6. nearly degenerate triangles")
+    lame = lame_pressure(E, nu, RING_INNER, RING_INNER + THICKNESS, INTERFERENCE)
+    out = run_scene("sleeve-circular", "hard-sliver-thin", "-mesh", "meshes/sliver-thin.msh", "-quiet", "1",
+                    "-steps", "300")
+    run = sleeve_outputs(out)
+    s = run["summary"]
+    err = s["final_pressure_mean"] / lame - 1
+    check(abs(err) <= 2e-3, f"layer of quality 0.011: final pressure {s['final_pressure_mean'] / 1e6:.4f} MPa, "
+          f"{err:.2e} from Lame (<= 2e-3); non-uniformity {100 * s['final_pressure_non_uniformity']:.2f} %")
+    sig = signorini("sliver-thin", contact_state(out, run), 1e-6 * INTERFERENCE)
+    code, msg = run_failing("sleeve-circular", "hard-sliver-degenerate", "-mesh", "meshes/sliver-degenerate.msh",
+                            "-quiet", "1", "-steps", "3")
+    m = re.search(r"error: mesh meshes/sliver-degenerate.msh: triangle (\d+) \(centroid (\S+) (\S+)\) has area (\S+) "
+                  r"< 1e-8 \(mean (\S+), quality (\S+)\)", msg)
+    check(code != 0 and m is not None, f"layer of quality 9e-6 rejected up front (exit {code}): "
+          + (m.group(0) if m else "no message naming the triangle"))
+    code2, msg2 = run_failing("sleeve-circular", "hard-sliver-strict", "-mesh", "meshes/sliver-thin.msh",
+                              "-quiet", "1", "-steps", "3", "-meshminquality", "0.05")
+    m2 = re.search(r"error: mesh meshes/sliver-thin.msh: triangle (\d+) .* has quality (\S+) < 0.05", msg2)
+    check(code2 != 0 and m2 is not None and float(m2.group(2)) < 0.05,
+          f"-meshminquality 0.05 rejects the thin layer (exit {code2}): " + (m2.group(0) if m2 else "no message"))
+    return dict(sig, lame_Pa=lame, final_pressure_Pa=s["final_pressure_mean"], lame_error=err,
+                non_uniformity=s["final_pressure_non_uniformity"], nodes=s["nodes"], triangles=s["triangles"],
+                iterations=iteration_stats(run["history"]),
+                degenerate_message=m.group(0) if m else None, strict_message=m2.group(0) if m2 else None)
+
+
+def main():
+    reference = sleeve_outputs(run_scene("sleeve-circular", "hard-reference-300", *COARSE, "-steps", "300"))
+    par = reference["summary"]["parameters"]
+    E, nu = par["E"], par["nu"]
+    fine = sleeve_outputs(run_scene("sleeve-circular", "hard-steps-1500", *COARSE, "-steps", "1500"))
+    results = {"test": "hard_cases", "mesh": "meshes/sleeve-coarse.msh",
+               "grazing": grazing(reference), "friction": friction(), "large_steps": large_steps(fine, E, nu),
+               "random_threshold_20K": random_threshold(reference), "slivers": slivers(E, nu)}
+    record("hard_cases", results)
+    finish()
+
+
+if __name__ == "__main__":
+    main()
