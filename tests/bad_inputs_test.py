@@ -84,7 +84,9 @@ def main():
     missing = [w for w in REQUIRED if w not in inputs]
     check(not missing, f"docs/errors.md has {len(rows)} rows covering every required kind of bad input"
           + (f" (missing: {missing})" if missing else ""))
-    env = {k: v for k, v in os.environ.items() if k != "SMA_PLUGIN"}
+    # No plugin override, and no flags of an enclosing make (make test -j): the make rows must run
+    # check-scene alone, first.
+    env = {k: v for k, v in os.environ.items() if k not in ("SMA_PLUGIN", "MAKEFLAGS", "MFLAGS", "MAKELEVEL")}
     measured = []
     with tempfile.TemporaryDirectory(prefix="bad-inputs-") as tmp:
         prepare(tmp)
