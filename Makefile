@@ -4,6 +4,7 @@
 #   make figures                                         every paper figure beside ours: docs/figures.md
 #   make bench                                           speed against error: docs/benchmarks.md
 #   make ensemble [NP=2] [SEEDS=8] [OUT=dir] [ARGS=...]  Monte Carlo over seeds of sleeve-random-threshold on MPI
+#   make docs                                            regenerate docs/parameter-reference.md from the scenes
 SHELL := /bin/bash
 .DEFAULT_GOAL := run
 
@@ -45,7 +46,7 @@ sleeve_opt_nr27 := -setnumber Ri 0.050445 -setnumber nr 27
 sliver_opt_thin := -setnumber eps 1.3e-5
 sliver_opt_degenerate := -setnumber eps 1e-8
 
-.PHONY: run test figures bench ensemble deps plugin meshes clean check-scene
+.PHONY: run test figures bench ensemble docs deps plugin meshes clean check-scene
 # The scenes behind the paper's figures (docs/figures.md), run at their defaults by make figures.
 FIGURE_SCENES := beam sleeve-circular sleeve-circular-single sleeve-circular-gvar sleeve-offset \
                  sleeve-elliptic sleeve-elliptic-friction sleeve-random-threshold
@@ -119,6 +120,10 @@ figures: test
 	@for scene in $(FIGURE_SCENES); do \
 	  $(MAKE) --no-print-directory run SCENE=$$scene ARGS='-quiet 1' || exit 1; done
 	@$(PYTHON) tools/figures.py
+
+# Every option of every scene and variant, from the sources (tools/param_reference.py says how).
+docs:
+	@$(PYTHON) tools/param_reference.py
 
 clean:
 	rm -rf build plugin/build meshes/*.msh results
