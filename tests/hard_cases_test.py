@@ -31,21 +31,15 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools"))
 
 from checklib import ROOT, TEST_RESULTS, check, finish, record, run_scene, sleeve_outputs  # noqa: E402
+from lame import lame_pressure  # noqa: E402
 
 COARSE = ["-mesh", "meshes/sleeve-coarse.msh", "-quiet", "1"]
 RING_INNER = 0.050445   # m, meshes/sleeve-coarse.msh and sliver-*.msh
 THICKNESS = 0.01        # m (meshes/ring.geo, sliver.geo)
 INTERFERENCE = 55e-6    # m, the sleeve scenes' default (pipe 5.05 cm)
-
-
-def lame_pressure(E, nu, Ri, Ro, delta):
-    """Contact pressure of a thick ring (plane strain) forced open by delta at Ri on a rigid shaft."""
-    lam, mu = E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu))
-    A = delta / (Ri + (lam + mu) * Ro ** 2 / (mu * Ri))
-    B = (lam + mu) * A * Ro ** 2 / mu
-    return -(2 * (lam + mu) * A - 2 * mu * B / Ri ** 2)
 
 
 def run_failing(scene, out_name, *args):

@@ -31,12 +31,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(HERE), "tools"))
 
 from checklib import ROOT, check, finish, record, rows, run_scene  # noqa: E402
 from curve_error import curve_error  # noqa: E402
-
-
-def lame_pressure(E, nu, a, b, delta):
-    """Textbook thick cylinder in plane strain under internal pressure p, free outside:
-    u(a) = (1 + nu) p a ((1 - 2 nu) a^2 + b^2) / (E (b^2 - a^2)); the p that gives u(a) = delta."""
-    return delta * E * (b * b - a * a) / ((1 + nu) * a * ((1 - 2 * nu) * a * a + b * b))
+from lame import lame_pressure  # noqa: E402
 
 
 def radial(tag, *args):

@@ -26,6 +26,8 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from curve_error import curve_error  # noqa: E402
+from lame import lame_pressure  # noqa: E402
+from plot_sleeve import read_csv, save as save_png  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 OUT = os.path.join(ROOT, "results", "bench")
@@ -56,8 +58,9 @@ if QUICK:
 PAPER_ITERATIONS = {"fixed_point": 3, "dc": 4, "psor": 10}
 
 
-def run(script, out, *args, allow_failure=False):
-    """Runs tools/ff script -out out args; returns (process wall seconds, summary or None, stderr)."""
+def run(script, out, *args, allow_failure=False, result="summary.json"):
+    """Runs tools/ff script -out out args; returns (process wall seconds, the JSON file `result` it
+    wrote in out or None, the error message or "")."""
     os.makedirs(out, exist_ok=True)
     start = time.perf_counter()
     proc = subprocess.run([os.path.join(ROOT, "tools", "ff"), script, "-out", out, *map(str, args)],
@@ -71,7 +74,7 @@ def run(script, out, *args, allow_failure=False):
         if not allow_failure:
             sys.exit(f"bench: {script} {' '.join(map(str, args))} failed: {message}")
         return wall, None, message
-    path = os.path.join(out, "summary.json")
+    path = os.path.join(out, result)
     summary = json.load(open(path)) if os.path.exists(path) else None
     return wall, summary, ""
 
@@ -91,19 +94,6 @@ def machine():
             "python": platform.python_version(), "date": time.strftime("%Y-%m-%d %H:%M")}
 
 
-def lame_pressure(E, nu, Ri, Ro, delta, plane="strain"):
-    """Shrink-fit pressure of a thick ring (Ri, Ro) on a rigid shaft, interference delta:
-    u = A r + B / r, sigma_rr(Ro) = 0, u(Ri) = delta, p = -sigma_rr(Ri)."""
-    mu = E / (2 * (1 + nu))
-    lam = E * nu / ((1 + nu) * (1 - 2 * nu))
-    if plane == "stress":
-        lam = 2 * lam * mu / (lam + 2 * mu)
-    # sigma_rr = 2 (lam + mu) A - 2 mu B / r^2; sigma_rr(Ro) = 0 -> A = mu B / ((lam + mu) Ro^2)
-    b = delta / (mu * Ri / ((lam + mu) * Ro ** 2) + 1 / Ri)
-    a = mu * b / ((lam + mu) * Ro ** 2)
-    return -(2 * (lam + mu) * a - 2 * mu * b / Ri ** 2)
-
-
 def fit_exponent(xs, ys):
     """Least-squares slope of log y against log x."""
     lx, ly = [math.log(x) for x in xs], [math.log(y) for y in ys]
@@ -114,14 +104,12 @@ def fit_exponent(xs, ys):
 def elliptic_liftoff(points_csv):
     """First contact at the axis that touches first; the lowest force there before the other axis
     touches (0: the paper's lift-off)."""
-    import csv
-    with open(points_csv) as f:
-        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
-    x = [float(r["pressure_x_axis_GPa"]) * 1e9 for r in rows]
-    y = [float(r["pressure_y_axis_GPa"]) * 1e9 for r in rows]
+    points = read_csv(points_csv)
+    x = [v * 1e9 for v in points["pressure_x_axis_GPa"]]
+    y = [v * 1e9 for v in points["pressure_y_axis_GPa"]]
     fx = next(i for i, v in enumerate(x) if v > 0)
     fy = next(i for i, v in enumerate(y) if v > 0)
-    first, second, other = (y, x, fx) if fy < fx else (x, y, fy)
+    first, other = (y, fx) if fy < fx else (x, fy)
     start = min(fx, fy)
     peak = max(first[start:other])
     low = min(first[start + first[start:other].index(peak):other]) if other > start else peak
@@ -131,10 +119,11 @@ def elliptic_liftoff(points_csv):
 
 
 def save(fig, name):
+    """docs/benchmarks/<name> (plot_sleeve.save: temporary name, renamed; closes the figure);
+    returns its path relative to docs/."""
     os.makedirs(PNG_DIR, exist_ok=True)
-    path = os.path.join(PNG_DIR, name)
-    fig.savefig(path + ".partial.png", dpi=110, bbox_inches="tight")
-    os.replace(path + ".partial.png", path)
+    fig.tight_layout()
+    save_png(fig, os.path.join(PNG_DIR, name), 110)
     return f"benchmarks/{name}"
 
 
@@ -256,13 +245,8 @@ def main():
 
     # ---- 4. Kernels ----
     print("bench: kernels (plugin against pure .edp, DC iteration against back-solve)", flush=True)
-    kdir = OUT
-    proc = subprocess.run([os.path.join(ROOT, "tools", "ff"), "edp/bench/kernels.edp", "-out", kdir,
-                           "-repeat", str(5 if QUICK else 20), "-sweeps", str(50 if QUICK else 200)],
-                          cwd=ROOT, capture_output=True, text=True)
-    if proc.returncode != 0:
-        sys.exit("bench: edp/bench/kernels.edp failed: " + proc.stderr.strip())
-    kernels = json.load(open(os.path.join(kdir, "kernels.json")))
+    _, kernels, _ = run("edp/bench/kernels.edp", OUT, "-repeat", 5 if QUICK else 20,
+                        "-sweeps", 50 if QUICK else 200, result="kernels.json")
     results["kernels"] = kernels
     results["plugin_speedup_projection"] = kernels["projection"]["speedup"]
     results["plugin_speedup_psor"] = kernels["psor"]["speedup"]
@@ -350,7 +334,6 @@ def write_doc(r, plt):
                 title="final pressure vs Lame")
     axes[0].legend(fontsize=7)
     pngs["wp"] = save(fig, "work-precision.png")
-    plt.close(fig)
     # Cost per step against nodes.
     cps = r["cost_per_step"]
     fig, ax = plt.subplots(figsize=(5, 4))
@@ -358,7 +341,6 @@ def write_doc(r, plt):
     ax.set(xlabel="nodes", ylabel="ms per time step (loop only)",
            title=f"cost per step, fitted exponent {r['cost_exponent_per_step']:.2f}")
     pngs["cost"] = save(fig, "cost-per-step.png")
-    plt.close(fig)
     # PSOR modes.
     fig, axes = plt.subplots(1, 2, figsize=(11, 4))
     for mode in ("full", "condensed-plain", "condensed"):
@@ -370,7 +352,6 @@ def write_doc(r, plt):
     axes[1].set(xlabel="omega", ylabel="ms per step (loop)")
     axes[0].legend(fontsize=8)
     pngs["psor"] = save(fig, "psor-modes.png")
-    plt.close(fig)
     # Lame.
     fig, ax = plt.subplots(figsize=(5, 4))
     for mode in ("condensed", "full"):
@@ -382,7 +363,6 @@ def write_doc(r, plt):
     ax.set(xlabel="wall time (s: mesh, assembly, factorisation, solve)", ylabel="pressure error vs Lame")
     ax.legend(fontsize=8)
     pngs["lame"] = save(fig, "lame.png")
-    plt.close(fig)
 
     m = r["machine"]
     k = r["kernels"]
