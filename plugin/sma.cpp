@@ -5,6 +5,16 @@
 //   long PhaseProject(real[] trace, real[] alpha, real[] c, real[] s, real[] phase)
 //       local DC step at every quadrature point; phase is in/out (previous -> new);
 //       returns the number of points whose phase changed.
+//   long PhaseFractionProject(real[] trace, real[] alpha, real[] c, real[] law, real[] local,
+//                             real[] s, real[] chi)
+//       local step with signed martensite fractions chi in [-1, 1] (in/out), s = alpha chi
+//       (plugin/core/phase_fraction.hpp); law = [rho, a, L, T0, Tc, M], M = lambda + 2 mu for the
+//       laminate (0: none); local = [kappa; b; chi at the step's start], n values each (kappa: K
+//       per unit fraction, b: the fraction the heat solve saw); kappa = M = 0 is the on/off step.
+//       Returns the number of points whose fraction changed.
+//   long FractionReversals(real[] chiStart, real[] chi, real[] reverted, real tol)
+//       points whose martensite fraction grew by > tol over a step after having lost fraction
+//       earlier (reverted: 0/1 per point, in/out; plugin/core/phase_fraction.hpp).
 //   real AuchmutyLocal(real[] trace, real[] alpha, real[] c, real[] s, real[] weight)
 //       sum_i w_i (phi2*(s_i) - trace_i s_i), the sigma2 part of L_II [45].
 //   long PhaseCoefficients(real[] T, real[] law = [rho, a, L, T0, Tc], real[] alpha, real[] c)
@@ -35,6 +45,7 @@
 #include "core/obstacle.hpp"
 #include "core/psor.hpp"
 #include "core/psor_full.hpp"
+#include "core/phase_fraction.hpp"
 #include "core/phase_projection.hpp"
 
 using namespace Fem2D;
@@ -63,6 +74,40 @@ long PhaseProject(KN<double>* const& trace, KN<double>* const& alpha, KN<double>
   });
 }
 
+sma::ThermalLaw thermal_law(KN<double>* law) {
+  if (law->N() != 5)
+    throw std::invalid_argument("law must be [rho, a, L, T0, Tc], got " + std::to_string(law->N()) +
+                                " values");
+  return sma::ThermalLaw{(*law)[0], (*law)[1], (*law)[2], (*law)[3], (*law)[4]};
+}
+
+long PhaseFractionProject(KN<double>* const& trace, KN<double>* const& alpha, KN<double>* const& c,
+                          KN<double>* const& law, KN<double>* const& local, KN<double>* const& s,
+                          KN<double>* const& chi) {
+  return guarded("PhaseFractionProject", [&] {
+    if (law->N() != 6)
+      throw std::invalid_argument("law must be [rho, a, L, T0, Tc, laminate modulus], got " +
+                                  std::to_string(law->N()) + " values");
+    const long n = trace->N();
+    if (local->N() != 3 * n)
+      throw std::invalid_argument("local data must hold kappa, b and chi at the step's start: " +
+                                  std::to_string(3 * n) + " values, got " + std::to_string(local->N()));
+    KN<double> thermal((*law)(SubArray(5)));
+    const double* data = n ? &(*local)[0] : nullptr;
+    const sma::span<const double> kappa{data, (std::size_t)n}, b{data + n, (std::size_t)n},
+        start{data + 2 * n, (std::size_t)n};
+    return (long)sma::project_fractions(thermal_law(&thermal), cview(trace), cview(alpha), cview(c),
+                                        kappa, b, start, (*law)[5], view(s), view(chi));
+  });
+}
+
+long FractionReversals(KN<double>* const& chiStart, KN<double>* const& chi,
+                       KN<double>* const& reverted, const double& tol) {
+  return guarded("FractionReversals", [&] {
+    return (long)sma::count_reversals(cview(chiStart), cview(chi), view(reverted), tol);
+  });
+}
+
 double AuchmutyLocal(KN<double>* const& trace, KN<double>* const& alpha, KN<double>* const& c,
                      KN<double>* const& s, KN<double>* const& weight) {
   return guarded("AuchmutyLocal", [&] {
@@ -74,11 +119,7 @@ double AuchmutyLocal(KN<double>* const& trace, KN<double>* const& alpha, KN<doub
 long PhaseCoefficients(KN<double>* const& T, KN<double>* const& law, KN<double>* const& alpha,
                        KN<double>* const& c) {
   return guarded("PhaseCoefficients", [&] {
-    if (law->N() != 5)
-      throw std::invalid_argument("law must be [rho, a, L, T0, Tc], got " + std::to_string(law->N()) +
-                                  " values");
-    const sma::ThermalLaw l{(*law)[0], (*law)[1], (*law)[2], (*law)[3], (*law)[4]};
-    sma::phase_coefficients(l, cview(T), view(alpha), view(c));
+    sma::phase_coefficients(thermal_law(law), cview(T), view(alpha), view(c));
     return (long)T->N();
   });
 }
@@ -181,7 +222,7 @@ long RoundToFloat(KN<double>* const& x) {
   return changed;
 }
 
-double SmaPluginVersion() { return 3.0; }
+double SmaPluginVersion() { return 4.0; }
 
 // FreeFEM's time() has a resolution of one second and clock() counts CPU time; timings of the
 // scenes are wall-clock seconds from a monotonic clock.
@@ -195,6 +236,9 @@ double WallSeconds() {
 static void Load_Init() {
   typedef KN<double>* A;
   Global.Add("PhaseProject", "(", new OneOperator5_<long, A, A, A, A, A>(PhaseProject));
+  Global.Add("PhaseFractionProject", "(",
+             new OneOperator7_<long, A, A, A, A, A, A, A>(PhaseFractionProject));
+  Global.Add("FractionReversals", "(", new OneOperator4_<long, A, A, A, double>(FractionReversals));
   Global.Add("PhaseCoefficients", "(", new OneOperator4_<long, A, A, A, A>(PhaseCoefficients));
   Global.Add("ObstacleGap", "(", new OneOperator6_<long, A, A, A, A, A, A>(ObstacleGap));
   Global.Add("PsorCondensed", "(",

@@ -1,0 +1,153 @@
+// Unit tests of the local step with martensite fractions (plugin/core/phase_fraction.hpp).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "core/phase_fraction.hpp"
+
+namespace {
+// The sleeve's NiTi (docs/parameters.md): rho, a, L, T0, Tc.
+const sma::ThermalLaw kLaw{7900.0, 300.0, 3000.0, 210.0, 280.0};
+constexpr double kKappa = 3000.0 / 837.0;  // L / C0, K per unit fraction
+
+// The local problem the step minimises: -alpha t chi + c |chi| + D/2 (|chi| - b)^2.
+double local_energy(double chi, double t, double alpha, double c, double D, double b) {
+  return -alpha * t * chi + c * std::fabs(chi) + 0.5 * D * (std::fabs(chi) - b) * (std::fabs(chi) - b);
+}
+}  // namespace
+
+TEST(PhaseFraction, ZeroKappaIsTheOnOffProjection) {
+  const double alpha = 4.0, c = 1.0;
+  for (double t : {-1.0, -0.25, -0.1, 0.0, 0.1, 0.25, 1.0})
+    for (double previous : {-1.0, 0.0, 1.0}) {
+      const sma::Phase p = sma::project_phase(t, alpha, c, sma::phase_of_fraction(previous));
+      EXPECT_EQ(sma::project_fraction(kLaw, t, alpha, c, 0.0, 0.0, previous),
+                sma::spherical_stress(p, 1.0))
+          << "t=" << t << " previous=" << previous;
+    }
+}
+
+TEST(PhaseFraction, MinimisesTheEnthalpyRegularisedLocalEnergy) {
+  // Temperatures around the reversion of the sleeve (T0 = 210 K < T < Tc), traces of both signs
+  // around the threshold c / alpha, latent fractions the heat solve may have seen.
+  for (double T : {205.0, 212.0, 213.0, 215.0, 240.0})
+    for (double t : {-3e-3, -1.3e-3, -1e-4, 1e-4, 6.8e-4, 1.3e-3, 3e-3})
+      for (double b : {0.0, 0.3, 1.0}) {
+        const double alpha = kLaw.alpha(T), c = kLaw.c(T);
+        const double D = sma::enthalpy_stiffness(kLaw, t, alpha, kKappa);
+        const double chi = sma::project_fraction(kLaw, t, alpha, c, kKappa, b, 0.0);
+        ASSERT_LE(std::fabs(chi), 1.0);
+        const double best = local_energy(chi, t, alpha, c, D, b);
+        for (int k = -1000; k <= 1000; ++k) {
+          const double trial = k / 1000.0;
+          EXPECT_LE(best, local_energy(trial, t, alpha, c, D, b) + 1e-9 * (std::fabs(best) + 1.0))
+              << "T=" << T << " t=" << t << " b=" << b << " chi=" << chi << " trial=" << trial;
+        }
+      }
+}
+
+TEST(PhaseFraction, PartialPointOnItsThresholdOnceTheHeatSawItsFraction) {
+  // With b = |chi| (the heat <-> phases fixed point), a partial fraction is only a fixed point
+  // where alpha |t| = c: the regularisation vanishes, Frémond's cases iv-v.
+  const double T = 213.0, alpha = kLaw.alpha(T), c = kLaw.c(T), t = c / alpha;
+  for (double b : {0.1, 0.5, 0.9}) {
+    const double chi = sma::project_fraction(kLaw, t, alpha, c, kKappa, b, b);
+    EXPECT_NEAR(chi, b, 1e-12);
+  }
+  // Off the threshold the fixed point is a pure phase: iterate chi -> project(b = |chi|).
+  for (double factor : {0.99, 1.01}) {
+    double chi = 0.5;
+    for (int it = 0; it < 200; ++it)
+      chi = sma::project_fraction(kLaw, factor * t, alpha, c, kKappa, std::fabs(chi), chi);
+    EXPECT_EQ(chi, factor > 1 ? 1.0 : 0.0);
+  }
+}
+
+TEST(PhaseFraction, TheDrivingForceMovesTheFractionByItsHeatBalance) {
+  // 0 < |chi| < 1: alpha |t| - c = D (|chi| - b), D = (rho a |t| + rho L / T0) kappa.
+  const double T = 214.0, alpha = kLaw.alpha(T), c = kLaw.c(T), t = 1.001 * c / alpha, b = 0.4;
+  const double chi = sma::project_fraction(kLaw, t, alpha, c, kKappa, b, b);
+  const double D = (kLaw.rho * kLaw.a * t + kLaw.rho * kLaw.latent / kLaw.T0) * kKappa;
+  EXPECT_GT(chi, b);
+  EXPECT_LT(chi, 1.0);
+  EXPECT_NEAR(alpha * t - c, D * (chi - b), 1e-9 * std::fabs(alpha * t - c));
+}
+
+TEST(PhaseFraction, SignFollowsTheTraceAndZeroTraceKeepsTheVariant) {
+  const double T = 200.0, alpha = kLaw.alpha(T), c = kLaw.c(T);  // below T0: martensite
+  EXPECT_GT(sma::project_fraction(kLaw, 1e-3, alpha, c, kKappa, 0.0, 0.0), 0.0);
+  EXPECT_LT(sma::project_fraction(kLaw, -1e-3, alpha, c, kKappa, 0.0, 0.0), 0.0);
+  EXPECT_LT(sma::project_fraction(kLaw, 0.0, alpha, c, kKappa, 0.5, -0.5), 0.0);
+  EXPECT_GT(sma::project_fraction(kLaw, 0.0, alpha, c, kKappa, 0.5, 0.0), 0.0);
+  // Above Tc: alpha = 0, austenite whatever the trace.
+  EXPECT_EQ(sma::project_fraction(kLaw, 5e-3, kLaw.alpha(300.0), kLaw.c(300.0), kKappa, 1.0, 1.0), 0.0);
+}
+
+TEST(PhaseFraction, ArrayVersionWritesStressAndCountsChanges) {
+  const double T = 213.0, alpha = kLaw.alpha(T), c = kLaw.c(T), t0 = c / alpha;
+  std::vector<double> trace{2 * t0, t0, 0.5 * t0}, a(3, alpha), cc(3, c), kappa(3, kKappa);
+  std::vector<double> b{1.0, 0.5, 0.0}, s(3), chi{1.0, 0.5, 0.0};
+  const std::vector<double> start = chi;
+  const std::size_t changed = sma::project_fractions(kLaw, trace, a, cc, kappa, b, start, 0.0, s, chi);
+  EXPECT_EQ(changed, 0u);
+  for (int i = 0; i < 3; ++i) EXPECT_DOUBLE_EQ(s[i], alpha * chi[i]);
+  b = {0.0, 0.0, 0.0};
+  EXPECT_EQ(sma::project_fractions(kLaw, trace, a, cc, kappa, b, start, 0.0, s, chi), 2u);
+}
+
+TEST(PhaseFraction, RejectsBadInput) {
+  std::vector<double> one{1.0}, two{1.0, 2.0}, bad{1.5}, negative{-1.0};
+  std::vector<double> s(1), chi(1);
+  EXPECT_THROW(sma::project_fractions(kLaw, one, two, one, one, one, one, 0.0, s, chi), std::invalid_argument);
+  EXPECT_THROW(sma::project_fractions(kLaw, one, one, one, one, bad, one, 0.0, s, chi), std::domain_error);
+  EXPECT_THROW(sma::project_fractions(kLaw, one, one, one, negative, one, one, 0.0, s, chi), std::domain_error);
+  EXPECT_THROW(sma::project_fractions(kLaw, one, negative, one, one, one, one, 0.0, s, chi), std::domain_error);
+  EXPECT_THROW(sma::project_fractions(kLaw, one, one, one, one, one, one, -1.0, s, chi), std::domain_error);
+  const sma::ThermalLaw inverted{7900.0, 300.0, 3000.0, 290.0, 280.0};
+  EXPECT_THROW(sma::project_fractions(inverted, one, one, one, one, one, one, 0.0, s, chi), std::invalid_argument);
+}
+
+TEST(PhaseFractionLaminate, PurePointsKeepFremondsPointwiseThreshold) {
+  // Laminate modulus M = lambda + 2 mu (plane strain, E 85 GPa, nu 0.3); b = the fraction itself
+  // (converged heat): a pure point changes exactly where Frémond's on/off step would.
+  const double M = 85e9 * 0.7 / (1.3 * 0.4), T = 213.0, alpha = kLaw.alpha(T), c = kLaw.c(T);
+  const double t0 = c / alpha;
+  EXPECT_EQ(sma::project_fraction(kLaw, 1.0001 * t0, alpha, c, kKappa, 1.0, 1.0, 1.0, M), 1.0);
+  EXPECT_LT(sma::project_fraction(kLaw, 0.9999 * t0, alpha, c, kKappa, 1.0, 1.0, 1.0, M), 1.0);
+  EXPECT_EQ(sma::project_fraction(kLaw, 0.9999 * t0, alpha, c, kKappa, 0.0, 0.0, 0.0, M), 0.0);
+  EXPECT_GT(sma::project_fraction(kLaw, 1.0001 * t0, alpha, c, kKappa, 0.0, 0.0, 0.0, M), 0.0);
+}
+
+TEST(PhaseFractionLaminate, PartialPointHoldsInsideTheLamellaeAdmissibleBand) {
+  // With b = beta the point keeps its fraction as long as both lamellae are admissible for
+  // Frémond's pointwise law: the martensite one, trace t + (1 - beta) alpha / M, above its
+  // threshold and the austenite one, t - beta alpha / M, below: -(1 - beta) q <= alpha t - c <= beta q.
+  const double M = 85e9 * 0.7 / (1.3 * 0.4), T = 214.0, alpha = kLaw.alpha(T), c = kLaw.c(T);
+  const double q = alpha * alpha / M, beta = 0.4;
+  for (double drive : {-(1 - beta) * q * 0.999, 0.0, beta * q * 0.999}) {
+    const double t = (c + drive) / alpha;
+    EXPECT_NEAR(sma::project_fraction(kLaw, t, alpha, c, kKappa, beta, beta, beta, M), beta, 1e-12)
+        << "drive=" << drive;
+  }
+  // Beyond the band the fraction moves, towards austenite below it, martensite above.
+  const double below = (c - (1 - beta) * q * 1.01) / alpha, above = (c + beta * q * 1.01) / alpha;
+  EXPECT_LT(sma::project_fraction(kLaw, below, alpha, c, kKappa, beta, beta, beta, M), beta);
+  EXPECT_GT(sma::project_fraction(kLaw, above, alpha, c, kKappa, beta, beta, beta, M), beta);
+  // Without heat (kappa = 0) the band alone fixes the fraction: reverting, the martensite
+  // lamella sits on its threshold, alpha (t + (1 - beta) alpha / M) = c.
+  const double t = (c - 0.3 * q) / alpha;
+  const double chi = sma::project_fraction(kLaw, t, alpha, c, 0.0, 0.0, 1.0, 1.0, M);
+  EXPECT_NEAR(alpha * (t + (1 - chi) * alpha / M), c, 1e-9 * c);
+}
+
+TEST(Reversals, CountsPointsThatGrowAfterHavingShrunk) {
+  std::vector<double> start{1.0, 1.0, 0.5, 0.0}, reverted(4, 0.0);
+  std::vector<double> step1{0.5, 1.0, 0.5, 0.0};  // point 0 reverts in part
+  EXPECT_EQ(sma::count_reversals(start, step1, reverted, 1e-12), 0u);
+  EXPECT_EQ(reverted, (std::vector<double>{1, 0, 0, 0}));
+  std::vector<double> step2{-0.7, 1.0, 0.6, 0.2};  // 0 grows again (either variant): a reversal;
+  EXPECT_EQ(sma::count_reversals(step1, step2, reverted, 1e-12), 1u);  // 2 and 3 never shrank
+  EXPECT_EQ(sma::count_reversals(step2, step2, reverted, 0.0), 0u);
+  EXPECT_THROW(sma::count_reversals(start, step1, reverted, -1.0), std::invalid_argument);
+}
