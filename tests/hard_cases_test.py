@@ -224,7 +224,7 @@ def random_threshold(reference):
     args = ["-mesh", "meshes/sleeve-coarse.msh", "-quiet", "1", "-steps", "300", "-cspread", "20"]
     code, err = run_failing("sleeve-random-threshold", "hard-random-20", *args)
     m = re.search(r"error: DCT fixed point \(heat <-> phases\) did not converge: (\d+) iterations, relative "
-                  r"change of T (\S+) > tol (\S+)", err)
+                  r"change of T (\S+) > tol ([0-9.eE+-]+)", err)
     check(code != 0 and m is not None and int(m.group(1)) == 30 and float(m.group(2)) > float(m.group(3)),
           f"without -fprelax: fails loudly (exit {code}): "
           + (m.group(0) if m else "no 'DCT fixed point ... did not converge' message"))
