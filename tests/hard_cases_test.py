@@ -225,8 +225,9 @@ def random_threshold(reference):
     code, err = run_failing("sleeve-random-threshold", "hard-random-20", *args)
     m = re.search(r"error: DCT fixed point \(heat <-> phases\) did not converge: (\d+) iterations, relative "
                   r"change of T (\S+) > tol ([0-9.eE+-]+)", err)
-    check(code != 0 and m is not None and int(m.group(1)) == 30 and float(m.group(2)) > float(m.group(3)),
-          f"without -fprelax: fails loudly (exit {code}): "
+    check(code != 0 and m is not None and int(m.group(1)) == 30 and float(m.group(2)) > float(m.group(3))
+          and "-fprelax 1" in err,
+          f"without -fprelax: fails loudly, naming -fprelax 1 (exit {code}): "
           + (m.group(0) if m else "no 'DCT fixed point ... did not converge' message"))
     result = {"loud_failure": m.group(0) if m else None, "exit_code": code}
     code, err = run_failing("sleeve-random-threshold", "hard-random-20-relax", *args, "-fprelax", "1")
