@@ -21,7 +21,8 @@ PLUGIN_SOURCES := plugin/sma.cpp $(wildcard plugin/core/*.hpp)
 # made from meshes/<geo>.geo with the gmsh options <geo>_opt_<level> (the .geo files say why).
 BEAM_MESHES := meshes/beam-coarse.msh meshes/beam-medium.msh meshes/beam-fine.msh
 RING_MESHES := meshes/ring-coarse.msh meshes/ring-l1.msh meshes/ring-l2.msh meshes/ring-l3.msh meshes/ring-l4.msh
-SLEEVE_MESHES := meshes/sleeve-coarse.msh meshes/sleeve-quarter.msh meshes/sleeve-half-coarse.msh meshes/sleeve-half.msh
+SLEEVE_MESHES := meshes/sleeve-coarse.msh meshes/sleeve-quarter.msh meshes/sleeve-aniso.msh \
+                 meshes/sleeve-half-coarse.msh meshes/sleeve-half.msh meshes/sleeve-nr9.msh meshes/sleeve-nr12.msh
 # Quarter rings with nearly degenerate triangles (docs/stability.md, case 6).
 SLIVER_MESHES := meshes/sliver-thin.msh meshes/sliver-degenerate.msh
 MESHES := $(BEAM_MESHES) $(RING_MESHES) $(SLEEVE_MESHES) $(SLIVER_MESHES)
@@ -36,13 +37,20 @@ ring_opt_l4 := -setnumber nr 32
 # The sleeve's ring: inner radius 55 um below the pipe's 5.05 cm (docs/parameters.md, sleeve).
 sleeve_opt_coarse := -setnumber Ri 0.050445 -setnumber nr 6
 sleeve_opt_quarter := -setnumber Ri 0.050445 -setnumber nr 18
+# sleeve-circular's mesh: the same 18 layers through the thickness, 18 segments (5 degrees) along
+# the arc: the circular fit is radially symmetric, its error is the layers' (docs/benchmarks.md).
+sleeve_opt_aniso := -setnumber Ri 0.050445 -setnumber nr 18 -setnumber nt 18
 sleeve_opt_half-coarse := $(sleeve_opt_coarse) -setnumber half 1
 sleeve_opt_half := $(sleeve_opt_quarter) -setnumber half 1
-# The benchmarks' extra levels of the quarter ring (nr 6 and 18 are sleeve-coarse, sleeve-quarter).
-BENCH_MESHES := meshes/sleeve-nr9.msh meshes/sleeve-nr12.msh meshes/sleeve-nr27.msh
+# The refinement levels of the quarter ring (nr 6 and 18 are sleeve-coarse, sleeve-quarter; 9 and
+# 12 are used by tests/sleeve_convergence_test.py, 27 and 36 by the benchmarks only; -aniso36 is
+# sleeve-aniso with twice its layers).
+BENCH_MESHES := meshes/sleeve-nr27.msh meshes/sleeve-nr36.msh meshes/sleeve-aniso36.msh
 sleeve_opt_nr9 := -setnumber Ri 0.050445 -setnumber nr 9
 sleeve_opt_nr12 := -setnumber Ri 0.050445 -setnumber nr 12
 sleeve_opt_nr27 := -setnumber Ri 0.050445 -setnumber nr 27
+sleeve_opt_nr36 := -setnumber Ri 0.050445 -setnumber nr 36
+sleeve_opt_aniso36 := -setnumber Ri 0.050445 -setnumber nr 36 -setnumber nt 18
 sliver_opt_thin := -setnumber eps 1.3e-5
 sliver_opt_degenerate := -setnumber eps 1e-8
 

@@ -44,12 +44,13 @@ Plane Surface(1) = {1};
 // each arc, all diagonals the same way, so that every inner-surface node sees the same mesh
 // around it and the nodal contact pressures of a uniform fit are uniform (no mesh noise).
 If (Exists(nr))
+  If (!Exists(nt)) nt = 5 * nr; EndIf
   Transfinite Curve{1, 3} = nr + 1;
   If (half)
-    Transfinite Curve{2, 5, 4, 6} = 5 * nr + 1;
+    Transfinite Curve{2, 5, 4, 6} = nt + 1;
     Transfinite Surface{1} = {2, 3, 4, 5} Alternate;
   Else
-    Transfinite Curve{2, 4} = 5 * nr + 1;
+    Transfinite Curve{2, 4} = nt + 1;
     Transfinite Surface{1} Alternate;
   EndIf
 EndIf

@@ -16,9 +16,12 @@ unless said otherwise; about 40 s.
 3. Large steps: 150 and 15 steps against 1500: the same final pressure (all austenite, elastic)
    to 1e-9, Lame's within 1e-3; iteration counts and what the curve loses are recorded.
 4. Single precision: tests/sleeve_single_precision_test.py (final pressure check added there).
-5. Random threshold, spread 20 K: fails loudly (the heat-phase fixed point, its iteration count and
-   residual named); with -fprelax 1 every cycle is resolved to the fixed-point tolerance and the
-   run ends at the homogeneous final pressure; without a cycle -fprelax 1 changes no byte.
+5. Random threshold, spread 20 K: the default fraction model runs through with no reversal and no
+   pressure zigzag and ends at the homogeneous final pressure. The paper's on/off model
+   (-phasemodel onoff) fails loudly (the heat-phase fixed point, its iteration count and residual
+   named, and the -fprelax hint); with -fprelax 1 every cycle is resolved to the fixed-point
+   tolerance and the run ends at the homogeneous final pressure; without a cycle -fprelax 1
+   changes no byte.
 6. Slivers (meshes/sliver.geo): a layer of quality 0.011 converges to Lame within 2e-3; a layer of
    quality 9e-6 (area 7e-6 of the mean) is rejected up front naming the triangle; raising
    -meshminquality above 0.011 rejects the first one too.
@@ -221,7 +224,16 @@ NOTE = re.compile(r"note: DCT fixed point cycled \(period 2, (\d+) triangles fli
 
 def random_threshold(reference):
     print("== 5. random threshold, spread 20 K")
-    args = ["-mesh", "meshes/sleeve-coarse.msh", "-quiet", "1", "-steps", "300", "-cspread", "20"]
+    base = ["-mesh", "meshes/sleeve-coarse.msh", "-quiet", "1", "-steps", "300", "-cspread", "20"]
+    frac = sleeve_outputs(run_scene("sleeve-random-threshold", "hard-random-20-fraction", *base))["summary"]
+    homogeneous = reference["summary"]["final_pressure_mean"]
+    check(frac["reversal_steps"] == 0 and frac["pressure_zigzag_steps"] == 0
+          and abs(frac["final_pressure_mean"] / homogeneous - 1) <= 1e-9,
+          f"fraction model (default): runs through, {frac['reversal_steps']} reversal steps, "
+          f"{frac['pressure_zigzag_steps']} pressure zigzags, at most {frac['fixed_point_iterations_max']} "
+          f"fixed-point iterations, final {frac['final_pressure_mean'] / 1e6:.6f} vs {homogeneous / 1e6:.6f} MPa")
+    # The paper's on/off model, with its old iteration limit (the loud failure's count is asserted).
+    args = base + ["-phasemodel", "onoff", "-fpmaxit", "30"]
     code, err = run_failing("sleeve-random-threshold", "hard-random-20", *args)
     m = re.search(r"error: DCT fixed point \(heat <-> phases\) did not converge: (\d+) iterations, relative "
                   r"change of T (\S+) > tol ([0-9.eE+-]+)", err)
@@ -229,7 +241,9 @@ def random_threshold(reference):
           and "-fprelax 1" in err,
           f"without -fprelax: fails loudly, naming -fprelax 1 (exit {code}): "
           + (m.group(0) if m else "no 'DCT fixed point ... did not converge' message"))
-    result = {"loud_failure": m.group(0) if m else None, "exit_code": code}
+    result = {"fraction_model": {k: frac[k] for k in ("reversal_steps", "pressure_zigzag_steps",
+                                                      "fixed_point_iterations_max", "final_pressure_mean")},
+              "loud_failure": m.group(0) if m else None, "exit_code": code}
     code, err = run_failing("sleeve-random-threshold", "hard-random-20-relax", *args, "-fprelax", "1")
     notes = [(int(a), float(b), float(c), int(d), float(e)) for a, b, c, d, e in NOTE.findall(err)]
     check(code == 0 and len(notes) > 0, f"with -fprelax 1: exit {code}, {len(notes)} cycles resolved")
@@ -240,15 +254,16 @@ def random_threshold(reference):
               f"{worst:.1e}; flipping triangles per cycle {sorted(set(n[0] for n in notes))}, bisections "
               f"{min(n[3] for n in notes)}-{max(n[3] for n in notes)}, lambda {min(n[1] for n in notes):.4f}-"
               f"{max(n[2] for n in notes):.4f}")
-        final, homogeneous = run["summary"]["final_pressure_mean"], reference["summary"]["final_pressure_mean"]
+        final = run["summary"]["final_pressure_mean"]
         check(run["summary"]["austenite_step"] > 0 and abs(final / homogeneous - 1) <= 1e-9,
               f"ends all austenite at the homogeneous ring's pressure: {final / 1e6:.6f} vs "
               f"{homogeneous / 1e6:.6f} MPa")
         result.update(cycles=len(notes), max_residual=worst, final_pressure_Pa=final,
                       bisections=[n[3] for n in notes], lambdas=[n[1] for n in notes],
                       T_inner_austenite_C=run["summary"]["T_inner_austenite"] - 273.15)
-    same_out = run_scene("sleeve-circular", "hard-relax-no-cycle", *COARSE, "-steps", "300", "-fprelax", "1")
-    ref_out = os.path.join(TEST_RESULTS, "hard-reference-300")
+    onoff = [*COARSE, "-steps", "300", "-phasemodel", "onoff"]
+    ref_out = run_scene("sleeve-circular", "hard-reference-300-onoff", *onoff)
+    same_out = run_scene("sleeve-circular", "hard-relax-no-cycle", *onoff, "-fprelax", "1")
     same = [f for f in ("history.csv", "points.csv", "contact-final.csv", "fields-3-end.csv")
             if open(os.path.join(same_out, f), "rb").read() == open(os.path.join(ref_out, f), "rb").read()]
     check(len(same) == 4, f"sleeve-circular (no cycle) with -fprelax 1: {len(same)} of 4 files byte-identical")

@@ -228,6 +228,16 @@ def options_of_file(path, seen_files, block, found, scene_path=None):
     rel = os.path.relpath(path, ROOT)
     for index, line in enumerate(lines):
         code, comment = strip_comment(line)
+        declared = DECLARATION.match(code)
+        if declared and "getARGV" not in code and path != scene_path:
+            # A library's own default (e.g. sleeve.idp's dctPhaseModelDefault): first one wins.
+            for part in split_top_level(declared.group(2)):
+                name, _, value = (s.strip() for s in part.partition("="))
+                if value and re.fullmatch(r"[A-Za-z_]\w*", name) and name not in block:
+                    found_value = resolve(value, block)
+                    if found_value[1]:
+                        block[name] = (found_value[0], TYPES[declared.group(1)] if found_value[1] != "text" else "text")
+                        block_comments[(scene_path, name)] = comment
         inc = INCLUDE.match(code)
         if inc:
             lib = os.path.join(LIB, inc.group(1))
