@@ -173,24 +173,28 @@ def resolve(expr, block):
     return expr, None
 
 
+def add_declarations(code, comment, block, owner, keep_existing=False):
+    """Adds the simple declarations `type name = value[, ...];` of one line of code to block
+    (name -> (value, type)), their comment to block_comments under owner (a scene file);
+    keep_existing: a name already in block keeps its value."""
+    m = DECLARATION.match(code)
+    if not m or "getARGV" in code:
+        return
+    for part in split_top_level(m.group(2)):
+        name, _, value = (s.strip() for s in part.partition("="))
+        if not value or not re.fullmatch(r"[A-Za-z_]\w*", name) or (keep_existing and name in block):
+            continue
+        found = resolve(value, block)
+        if found[1]:
+            block[name] = (found[0], TYPES[m.group(1)] if found[1] != "text" else "text")
+            block_comments[(owner, name)] = comment
+
+
 def scene_block(path):
     """Simple declarations `type name = value[, ...];` of a scene file: name -> (value, type)."""
     block = {}
     for line in open(path, encoding="utf-8"):
-        code, comment = strip_comment(line)
-        m = DECLARATION.match(code)
-        if not m or "getARGV" in code:
-            continue
-        for part in split_top_level(m.group(2)):
-            if "=" not in part:
-                continue
-            name, value = (s.strip() for s in part.split("=", 1))
-            if not re.fullmatch(r"[A-Za-z_]\w*", name):
-                continue
-            found = resolve(value, block)
-            if found[1]:
-                block[name] = (found[0], TYPES[m.group(1)] if found[1] != "text" else "text")
-                block_comments[(path, name)] = comment
+        add_declarations(*strip_comment(line), block, path)
     return block
 
 
@@ -228,16 +232,9 @@ def options_of_file(path, seen_files, block, found, scene_path=None):
     rel = os.path.relpath(path, ROOT)
     for index, line in enumerate(lines):
         code, comment = strip_comment(line)
-        declared = DECLARATION.match(code)
-        if declared and "getARGV" not in code and path != scene_path:
-            # A library's own default (e.g. sleeve.idp's dctPhaseModelDefault): first one wins.
-            for part in split_top_level(declared.group(2)):
-                name, _, value = (s.strip() for s in part.partition("="))
-                if value and re.fullmatch(r"[A-Za-z_]\w*", name) and name not in block:
-                    found_value = resolve(value, block)
-                    if found_value[1]:
-                        block[name] = (found_value[0], TYPES[declared.group(1)] if found_value[1] != "text" else "text")
-                        block_comments[(scene_path, name)] = comment
+        if path != scene_path:
+            # A library's own default (e.g. sleeve.idp's dctPhaseModelDefault): the scene's wins.
+            add_declarations(code, comment, block, scene_path, keep_existing=True)
         inc = INCLUDE.match(code)
         if inc:
             lib = os.path.join(LIB, inc.group(1))
