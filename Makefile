@@ -119,7 +119,7 @@ SEEDS ?= 8
 OUT ?= results/sleeve-random-ensemble
 ensemble: plugin meshes
 	@OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_mpi_yield_when_idle=1 \
-	  FF_INCLUDEPATH="$(CURDIR)/edp/lib;/usr/include/freefem++/idp;./" \
+	  FF_INCLUDEPATH="$(CURDIR)/edp/lib;$(CURDIR)/edp/model;$(CURDIR)/edp/solvers;$(CURDIR)/edp/problems;/usr/include/freefem++/idp;./" \
 	  ff-mpirun -np $(NP) edp/ensemble/sleeve-random-ensemble.edp -v 0 -seeds $(SEEDS) -out $(OUT) $(ARGS)
 	@$(PYTHON) tools/plot_ensemble.py $(OUT)
 	@echo "results in $(OUT)/"

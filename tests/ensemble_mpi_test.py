@@ -43,7 +43,7 @@ STATISTICS = {"peak_pressure_mean_Pa": "peak_pressure_mean_Pa",
 
 def environment():
     env = dict(os.environ, OMPI_MCA_mpi_yield_when_idle="1",
-               FF_INCLUDEPATH=f"{ROOT}/edp/lib;/usr/include/freefem++/idp;./")
+               FF_INCLUDEPATH=f"{ROOT}/edp/lib;{ROOT}/edp/model;{ROOT}/edp/solvers;{ROOT}/edp/problems;/usr/include/freefem++/idp;./")
     if os.geteuid() == 0:  # OpenMPI refuses root without both
         env.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     return env

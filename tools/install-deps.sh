@@ -29,8 +29,10 @@ for f in "$stock_plugins/iovtk.so" "$stock_idp/getARGV.idp"; do
 done
 
 pref="$root/freefem++.pref"
-new=$(printf 'loadpath += "./"\nloadpath += "%s/plugin/build"\nloadpath += "%s"\nincludepath += "%s/edp/lib"\nincludepath += "%s"\n' \
-  "$root" "$stock_plugins" "$root" "$stock_idp")
+# The project's .idp folders: edp/lib (errors, output, meshes), edp/model (the material law),
+# edp/solvers (DC, heat, contact, DCT), edp/problems (the sleeve's setup, time loop and report).
+new=$(printf 'loadpath += "./"\nloadpath += "%s/plugin/build"\nloadpath += "%s"\nincludepath += "%s/edp/lib"\nincludepath += "%s/edp/model"\nincludepath += "%s/edp/solvers"\nincludepath += "%s/edp/problems"\nincludepath += "%s"\n' \
+  "$root" "$stock_plugins" "$root" "$root" "$root" "$root" "$stock_idp")
 if [ ! -f "$pref" ] || [ "$(cat "$pref")" != "$new" ]; then
   printf '%s\n' "$new" > "$pref"
 fi
