@@ -614,7 +614,7 @@ def write_doc(r, plt):
       "transient L1 against the reference above; *to next* = the same metric between a level and the next "
       "finer one; *order* = log(e_i / e_i+1) / log(n_i+1 / n_i); reversal steps: steps where a point "
       "went back towards martensite while heating; zigzags: step-to-step oscillations of the mean pressure "
-      "(summary.json, edp/lib/dct.idp `CurveZigzag`).")
+      "(summary.json, edp/solvers/dct.idp `CurveZigzag`).")
     w("")
     w("Radial model (sleeve-radial, default fraction model):")
     w("")
@@ -742,7 +742,7 @@ def write_doc(r, plt):
     w("")
     dc = k["dc"]
     w(f"Back-solve of the factorised stiffness ({2 * k['nodes']} dofs): {1e3 * dc['backsolve_seconds']:.3f} ms. "
-      f"One DC iteration as the scenes run it (edp/lib/dc.idp DCSolve: global step, traces, local step; "
+      f"One DC iteration as the scenes run it (edp/solvers/dc.idp DCSolve: global step, traces, local step; "
       f"no Lagrangian record): without contact {1e3 * dc['iteration_free_seconds']:.3f} ms = "
       f"**{dc['free_over_backsolve']:.2f}** back-solves; with the pipe ({dc['contact_nodes_active']} nodes "
       f"active, condensed PSOR warm-started from the previous reactions, then u = u_free + G r with the dense "

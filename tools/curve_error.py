@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Error between two force-temperature histories of the sleeve scenes (history.csv of
-edp/lib/sleeve.idp or edp/scenes/sleeve-radial.edp: columns t, pressure_mean, T_inner_mean,
+edp/problems/sleeve/sleeve-2d.idp or edp/scenes/sleeve-radial.edp: columns t, pressure_mean, T_inner_mean,
 contact_nodes, fraction_austenite).
 
     curve_error(history_csv, reference_csv) -> dict

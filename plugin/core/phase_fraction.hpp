@@ -20,7 +20,7 @@
 //   |chi| = clamp(b + (alpha |t| - c) / D, 0, 1),  sign(chi) = sign(t)
 // (t = 0: the previous sign, martensite 1 from austenite). It is the Frémond projection at the
 // temperature the point would reach with its own latent heat: once the heat solve is redone with
-// b = |chi| (the heat <-> phases fixed point, edp/lib/dct.idp) the D term vanishes and
+// b = |chi| (the heat <-> phases fixed point, edp/solvers/dct.idp) the D term vanishes and
 //   0 < |chi| < 1  =>  alpha |t| = c  (the point on its threshold, cases iv-v),
 //   |chi| = 1      =>  alpha |t| >= c,    chi = 0  =>  alpha |t| <= c,
 // exactly Frémond's complementarity at the converged temperature, whatever kappa > 0.
