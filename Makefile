@@ -34,25 +34,29 @@ ring_opt_l1 := -setnumber nr 4
 ring_opt_l2 := -setnumber nr 8
 ring_opt_l3 := -setnumber nr 16
 ring_opt_l4 := -setnumber nr 32
-# The sleeve's ring: inner radius 55 um below the pipe's 5.05 cm (docs/parameters.md, sleeve).
-sleeve_opt_coarse := -setnumber Ri 0.050445 -setnumber nr 6
-sleeve_opt_quarter := -setnumber Ri 0.050445 -setnumber nr 18
+# The sleeve's ring: inner radius 55 um below the pipe's 5.05 cm (docs/parameters.md, sleeve), read
+# from meshes/sleeve-geometry.txt, the one place of the sleeve's dimensions (the scripts read it too).
+SLEEVE_GEOMETRY := meshes/sleeve-geometry.txt
+SLEEVE_RING := -setnumber Ri $(shell awk '$$1 == "Ri" {print $$2}' $(SLEEVE_GEOMETRY)) \
+               -setnumber Hr $(shell awk '$$1 == "Hr" {print $$2}' $(SLEEVE_GEOMETRY))
+sleeve_opt_coarse := $(SLEEVE_RING) -setnumber nr 6
+sleeve_opt_quarter := $(SLEEVE_RING) -setnumber nr 18
 # sleeve-circular's mesh: the same 18 layers through the thickness, 18 segments (5 degrees) along
 # the arc: the circular fit is radially symmetric, its error is the layers' (docs/benchmarks.md).
-sleeve_opt_aniso := -setnumber Ri 0.050445 -setnumber nr 18 -setnumber nt 18
+sleeve_opt_aniso := $(SLEEVE_RING) -setnumber nr 18 -setnumber nt 18
 sleeve_opt_half-coarse := $(sleeve_opt_coarse) -setnumber half 1
 sleeve_opt_half := $(sleeve_opt_quarter) -setnumber half 1
 # The refinement levels of the quarter ring (nr 6 and 18 are sleeve-coarse, sleeve-quarter; 9 and
 # 12 are used by tests/sleeve_convergence_test.py, 27 and 36 by the benchmarks only; -aniso36 is
 # sleeve-aniso with twice its layers).
 BENCH_MESHES := meshes/sleeve-nr27.msh meshes/sleeve-nr36.msh meshes/sleeve-aniso36.msh
-sleeve_opt_nr9 := -setnumber Ri 0.050445 -setnumber nr 9
-sleeve_opt_nr12 := -setnumber Ri 0.050445 -setnumber nr 12
-sleeve_opt_nr27 := -setnumber Ri 0.050445 -setnumber nr 27
-sleeve_opt_nr36 := -setnumber Ri 0.050445 -setnumber nr 36
-sleeve_opt_aniso36 := -setnumber Ri 0.050445 -setnumber nr 36 -setnumber nt 18
-sliver_opt_thin := -setnumber eps 1.3e-5
-sliver_opt_degenerate := -setnumber eps 1e-8
+sleeve_opt_nr9 := $(SLEEVE_RING) -setnumber nr 9
+sleeve_opt_nr12 := $(SLEEVE_RING) -setnumber nr 12
+sleeve_opt_nr27 := $(SLEEVE_RING) -setnumber nr 27
+sleeve_opt_nr36 := $(SLEEVE_RING) -setnumber nr 36
+sleeve_opt_aniso36 := $(SLEEVE_RING) -setnumber nr 36 -setnumber nt 18
+sliver_opt_thin := $(SLEEVE_RING) -setnumber eps 1.3e-5
+sliver_opt_degenerate := $(SLEEVE_RING) -setnumber eps 1e-8
 
 .PHONY: run test figures bench ensemble docs deps plugin meshes clean check-scene
 # The scenes behind the paper's figures (docs/figures.md), run at their defaults by make figures.
@@ -80,9 +84,9 @@ meshes/beam-%.msh: meshes/beam.geo
 	$(call gmsh_mesh,beam)
 meshes/ring-%.msh: meshes/ring.geo
 	$(call gmsh_mesh,ring)
-meshes/sleeve-%.msh: meshes/ring.geo
+meshes/sleeve-%.msh: meshes/ring.geo $(SLEEVE_GEOMETRY)
 	$(call gmsh_mesh,sleeve)
-meshes/sliver-%.msh: meshes/sliver.geo
+meshes/sliver-%.msh: meshes/sliver.geo $(SLEEVE_GEOMETRY)
 	$(call gmsh_mesh,sliver)
 
 # SCENE reaches the shell through the environment, never pasted into the recipe, so that quotes
