@@ -11,10 +11,11 @@ unless said otherwise; about 40 s.
 2. Friction mu = 0.5 and 1.0 beside 0 and 0.2 (sleeve-elliptic-friction): every node inside the
    Coulomb cone |t| <= mu n (1 + 1e-8), Signorini from the end displacement (no penetration,
    gap 0 where the normal force is > 0), a node that slipped over the last step is on the cone
-   with its force opposing the slip; the mean pressure does not depend on mu (within 1e-4: the
-   fit's axisymmetric mode is set by the mean interference, friction only redistributes).
-3. Large steps: 150 and 15 steps against 1500: the same final pressure (all austenite, elastic)
-   to 1e-9, Lame's within 1e-3; iteration counts and what the curve loses are recorded.
+   with its force opposing the slip; the mean pressure of mu = 0.2, 0.5, 1.0 is mu = 0's (within
+   1e-4: the fit's axisymmetric mode is set by the mean interference, friction only redistributes).
+3. Large steps: 1500, 150 and 15 steps each end all austenite (so the final state is linear
+   elastic) within 1e-3 of Lame's shrink-fit pressure (coarse mesh); 150 and 15 steps against
+   1500: the same final pressure to 1e-9; iteration counts and what the curve loses are recorded.
 4. Single precision: tests/sleeve_single_precision_test.py (final pressure check added there).
 5. Random threshold, spread 20 K: the default fraction model runs through with no reversal and no
    pressure zigzag and ends at the homogeneous final pressure. The paper's on/off model
@@ -175,10 +176,15 @@ def friction():
             check(consistent, f"mu {mu_text}: {len(n) - len(slipping)} nodes stick, {len(slipping)} slipped over "
                   f"the last step, each of those on the cone with its force opposing the slip")
             entry.update(max_cone_ratio=ratio, nodes_sticking=len(n) - len(slipping), nodes=len(n))
-        change = s["final_pressure_mean"] / base - 1
-        check(abs(change) <= 1e-4, f"mu {mu_text}: mean pressure {s['final_pressure_mean'] / 1e6:.5f} MPa, "
-              f"{change:+.1e} from mu = 0; non-uniformity {100 * s['final_pressure_non_uniformity']:.1f} %, "
-              f"slip-threshold iterations <= {s['slip_threshold_iterations_max']}, DC <= {s['dc_iterations_max']}")
+        loops = (f"non-uniformity {100 * s['final_pressure_non_uniformity']:.1f} %, slip-threshold iterations "
+                 f"<= {s['slip_threshold_iterations_max']}, DC <= {s['dc_iterations_max']}")
+        if mu > 0:  # mu = 0 is the reference of this comparison
+            change = s["final_pressure_mean"] / base - 1
+            check(abs(change) <= 1e-4, f"mu {mu_text}: mean pressure {s['final_pressure_mean'] / 1e6:.5f} MPa, "
+                  f"{change:+.1e} from mu = 0; {loops}")
+            entry["mean_pressure_change_from_mu_0"] = change
+        else:
+            print(f"info mu 0: mean pressure {s['final_pressure_mean'] / 1e6:.5f} MPa (the reference); {loops}")
         result[mu_text] = entry
     return result
 
@@ -194,15 +200,24 @@ def large_steps(fine, E, nu):
     for n, run in runs.items():
         s = run["summary"]
         dt = s["parameters"]["dt"]
-        diff = s["final_pressure_mean"] / ref - 1
-        check(abs(diff) <= 1e-9, f"{n} steps (dt {dt} s): final pressure {s['final_pressure_mean'] / 1e6:.6f} MPa, "
-              f"{diff:.1e} from 1500 steps")
-        err = s["final_pressure_mean"] / lame - 1
-        check(abs(err) <= 1e-3, f"{n} steps: {err:.2e} from Lame's {lame / 1e6:.6f} MPa (coarse mesh)")
         hist = run["history"]
+        # Lame's pressure is the answer only if the ring ends all austenite (then linear elastic).
+        austenite = float(hist[-1]["fraction_austenite"])
+        check(s["austenite_step"] > 0 and austenite >= 1 - 1e-12,
+              f"{n} steps (dt {dt} s): ends all austenite (fraction {austenite!r}, for good from step "
+              f"{s['austenite_step']})")
+        err = s["final_pressure_mean"] / lame - 1
+        check(abs(err) <= 1e-3, f"{n} steps: final pressure {s['final_pressure_mean'] / 1e6:.6f} MPa, {err:.2e} "
+              f"from Lame's {lame / 1e6:.6f} MPa (<= 1e-3, coarse mesh)")
+        diff = None
+        if run is not fine:  # the 1500-step run is the reference of this comparison
+            diff = s["final_pressure_mean"] / ref - 1
+            check(abs(diff) <= 1e-9, f"{n} steps: final pressure {diff:.2e} from 1500 steps' "
+                  f"{ref / 1e6:.6f} MPa (<= 1e-9)")
         reversion = next((i + 1 for i, r in enumerate(hist) if float(r["fraction_austenite"]) > 0), -1)
         first = s["first_contact_step"]
         entry = {"dt_s": dt, "final_pressure_Pa": s["final_pressure_mean"], "lame_error": err,
+                 "final_fraction_austenite": austenite, "diff_from_1500_steps": diff,
                  "first_contact_step": first, "first_contact_time_s": first * dt,
                  "T_inner_first_contact_C": s["T_inner_first_contact"] - 273.15,
                  "reversion_step": reversion, "austenite_step": s["austenite_step"],

@@ -159,48 +159,4 @@ inline PsorResult psor_condensed(const Eigen::MatrixXd& W, const Eigen::VectorXd
   return result;
 }
 
-// Coulomb friction as the paper's fixed point on the slip threshold [58]-[60]: solve the Tresca
-// problem with g_i = mu_i r_n,i of the previous iterate until the thresholds stop changing
-// (max |g_new - g| <= fp_tol max |g|). `sweeps` accumulates the PSOR sweeps of every iterate.
-struct CoulombResult {
-  int iterations = 0;
-  int sweeps = 0;
-  double residual = 0.0;  // relative change of the thresholds at the last iterate
-  bool converged = false;
-  PsorResult last_psor;
-};
-
-inline CoulombResult coulomb_condensed(const Eigen::MatrixXd& W, const Eigen::VectorXd& q,
-                                       const Eigen::VectorXd& mu, double omega, double psor_tol,
-                                       int psor_maxit, double fp_tol, int fp_maxit,
-                                       Eigen::VectorXd& r) {
-  const Eigen::Index m = mu.size();
-  for (Eigen::Index i = 0; i < m; ++i)
-    if (!(mu[i] >= 0.0))
-      throw std::invalid_argument("coulomb: friction coefficient mu = " + std::to_string(mu[i]) +
-                                  " < 0 at contact node " + std::to_string(i));
-  CoulombResult result;
-  Eigen::VectorXd g(m);
-  for (Eigen::Index i = 0; i < m; ++i) g[i] = mu[i] * std::max(0.0, r[2 * i]);
-  while (result.iterations < fp_maxit) {
-    ++result.iterations;
-    result.last_psor = psor_condensed(W, q, g, omega, psor_tol, psor_maxit, r);
-    result.sweeps += result.last_psor.iterations;
-    if (!result.last_psor.converged) return result;  // the caller reports the inner loop
-    double change = 0.0, size = 0.0;
-    for (Eigen::Index i = 0; i < m; ++i) {
-      const double gi = mu[i] * r[2 * i];
-      change = std::max(change, std::fabs(gi - g[i]));
-      size = std::max(size, std::fabs(gi));
-      g[i] = gi;
-    }
-    result.residual = size > 0 ? change / size : change;
-    if (result.residual <= fp_tol) {
-      result.converged = true;
-      break;
-    }
-  }
-  return result;
-}
-
 }  // namespace sma
