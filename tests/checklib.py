@@ -10,6 +10,18 @@ TEST_RESULTS = os.path.join(ROOT, "build", "test-results")
 failures = []
 
 
+def sleeve_geometry():
+    """The sleeve's dimensions (m) from meshes/sleeve-geometry.txt, the one place of them:
+    {"Ri": inner radius, "Hr": thickness, "pipe": pipe radius}."""
+    values = {}
+    with open(os.path.join(ROOT, "meshes", "sleeve-geometry.txt")) as f:
+        for line in f:
+            if line.strip() and not line.startswith("#"):
+                key, value = line.split()
+                values[key] = float(value)
+    return values
+
+
 def check(condition, message):
     """Prints ok/FAIL with the measured figures in `message`; remembers failures."""
     print(("ok   " if condition else "FAIL ") + message)

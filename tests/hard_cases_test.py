@@ -37,13 +37,13 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools"))
 
-from checklib import ROOT, TEST_RESULTS, check, finish, record, run_scene, sleeve_outputs  # noqa: E402
+from checklib import ROOT, TEST_RESULTS, check, finish, record, run_scene, sleeve_outputs, sleeve_geometry  # noqa: E402
 from lame import lame_pressure  # noqa: E402
 
 COARSE = ["-mesh", "meshes/sleeve-coarse.msh", "-quiet", "1"]
-RING_INNER = 0.050445   # m, meshes/sleeve-coarse.msh and sliver-*.msh
-THICKNESS = 0.01        # m (meshes/ring.geo, sliver.geo)
-INTERFERENCE = 55e-6    # m, the sleeve scenes' default (pipe 5.05 cm)
+RING_INNER = sleeve_geometry()["Ri"]  # m: meshes/sleeve-geometry.txt, the meshes' ring
+THICKNESS = sleeve_geometry()["Hr"]  # m
+INTERFERENCE = sleeve_geometry()["pipe"] - RING_INNER  # m, the sleeve scenes' default (55 um)
 
 
 def run_failing(scene, out_name, *args):

@@ -21,18 +21,8 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools"))
 
-from checklib import ROOT, check, finish, record, run_scene, sleeve_outputs  # noqa: E402
+from checklib import ROOT, check, finish, record, run_scene, sleeve_geometry, sleeve_outputs  # noqa: E402
 from lame import lame_pressure  # noqa: E402
-
-
-def geometry():
-    values = {}
-    with open(os.path.join(ROOT, "meshes", "sleeve-geometry.txt")) as f:
-        for line in f:
-            if line.strip() and not line.startswith("#"):
-                key, value = line.split()
-                values[key] = float(value)
-    return values
 
 
 def summary(out):
@@ -41,7 +31,7 @@ def summary(out):
 
 
 def main():
-    g = geometry()
+    g = sleeve_geometry()
     E, nu, delta, thickness = 85e9, 0.3, 60e-6, 0.012
     Ri = g["pipe"] - delta
     lame = lame_pressure(E, nu, Ri, Ri + thickness, delta)

@@ -16,9 +16,9 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from checklib import check, finish, record, run_scene, sleeve_outputs  # noqa: E402
+from checklib import check, finish, record, run_scene, sleeve_outputs, sleeve_geometry  # noqa: E402
 
-RING_INNER = 0.050445  # m, meshes/sleeve-coarse.msh (Makefile: sleeve_opt_coarse)
+RING_INNER = sleeve_geometry()["Ri"]  # m: meshes/sleeve-geometry.txt, the meshes' ring
 
 
 def main():
