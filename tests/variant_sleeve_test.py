@@ -1,0 +1,200 @@
+#!/usr/bin/python3
+"""Verification of the four sleeve variants (edp/variants/sleeve-*.edp; docs/variants.md, "Sleeve
+variants"), each against an exact value or a reduction, on the coarse mesh (600 steps; the
+superellipse's default on its own mesh), two runs at a time. Runs into build/test-results/variant-sleeve-*/ and asserts:
+  * sleeve-imposed-pipe-temperature (-Tpipe 313.15, 20 K above the air: no exchange could hold a
+    node there): up to its first contact the run is sleeve-circular's, row for row (history.csv,
+    points.csv); at every step after one where all the contact nodes touched, their mean
+    temperature (history.csv) and the three points' (points.csv) equal Tpipe within 1e-6 K;
+  * sleeve-superellipse: -p 2 with the elliptic scene's semi-axes gives the plugin's ellipse
+    (gaps within 1e-15 m, normals 1e-12, printed by the variant) and sleeve-elliptic's run (mean
+    pressure within 1e-5 of the final value at every step, the same first contact and final
+    pressure within 1e-6); the closest points of the default (p = 2.002) and of p = 2 lie on the
+    curve (1e-12) with the normal along its gradient (1e-12); by default the corners touch first
+    (the diagonal point before the axes' points) and every node touches at the end;
+  * sleeve-plane-stress: the final (all-austenite) pressure equals Lame's plane-stress shrink fit
+    (tools/lame.py, the ring's radii from meshes/sleeve-geometry.txt) within 1e-3 (plane strain's
+    value is 7 % higher);
+  * sleeve-asymmetric-law: -ratio 1 reproduces sleeve-circular -phasemodel onoff byte for byte
+    (history.csv, points.csv, contact-final.csv) and ran the asymmetric step; -ratio 0.75 too,
+    because no point is ever compressed (printed: 0 compressed, 0 in martensite 2), so alpha-
+    never acts; -phasemodel fraction fails naming -phasemodel onoff.
+Writes results/checks/variant_sleeve.json.
+"""
+import concurrent.futures
+import json
+import os
+import re
+import subprocess
+import sys
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools"))
+
+from checklib import ROOT, TEST_RESULTS, check, finish, record, rows, sleeve_outputs  # noqa: E402
+from lame import lame_pressure  # noqa: E402
+
+COARSE = ["-mesh", "meshes/sleeve-coarse.msh", "-steps", "600", "-quiet", "1"]
+TPIPE = 313.15
+
+
+def geometry():
+    values = {}
+    for line in open(os.path.join(ROOT, "meshes", "sleeve-geometry.txt")):
+        words = line.split()
+        if len(words) == 2 and not line.startswith("#"):
+            values[words[0]] = float(words[1])
+    return values
+
+
+def run(job):
+    """job = (name, script, args): runs the script into build/test-results/variant-sleeve-<name>;
+    returns (name, out, stdout, stderr, exit code)."""
+    name, script, args = job
+    out = os.path.join(TEST_RESULTS, f"variant-sleeve-{name}")
+    p = subprocess.run([os.path.join(ROOT, "tools", "ff"), script, "-out", out, *args], cwd=ROOT,
+                       capture_output=True, text=True)
+    return name, out, p.stdout, p.stderr, p.returncode
+
+
+def number(pattern, text):
+    """The number that `pattern`'s {} stands for in `text` (nan when absent)."""
+    m = re.search(pattern.replace("{}", r"([-+]?[0-9.]+(?:e[-+]?[0-9]+)?)"), text)
+    return float(m.group(1)) if m else float("nan")
+
+
+def same_files(a, b, files):
+    return all(open(os.path.join(a, f), "rb").read() == open(os.path.join(b, f), "rb").read() for f in files)
+
+
+def main():
+    start = time.time()
+    jobs = [
+        ("circular", "edp/scenes/sleeve-circular.edp", COARSE),
+        ("imposed", "edp/variants/sleeve-imposed-pipe-temperature.edp", COARSE + ["-Tpipe", str(TPIPE)]),
+        ("elliptic", "edp/scenes/sleeve-elliptic.edp", COARSE),
+        ("superellipse-p2", "edp/variants/sleeve-superellipse.edp",
+         COARSE + ["-p", "2", "-pipeA", "0.050489", "-pipeB", "0.0505"]),
+        # its own mesh (sleeve-quarter, 91 nodes: on the coarse one the two axis nodes stay open)
+        ("superellipse", "edp/variants/sleeve-superellipse.edp", ["-steps", "600", "-quiet", "1"]),
+        ("plane-stress", "edp/variants/sleeve-plane-stress.edp", COARSE),
+        ("circular-onoff", "edp/scenes/sleeve-circular.edp", COARSE + ["-phasemodel", "onoff"]),
+        ("asymmetric-1", "edp/variants/sleeve-asymmetric-law.edp", COARSE + ["-ratio", "1"]),
+        ("asymmetric-075", "edp/variants/sleeve-asymmetric-law.edp", COARSE + ["-ratio", "0.75"]),
+        ("asymmetric-fraction", "edp/variants/sleeve-asymmetric-law.edp", COARSE + ["-phasemodel", "fraction"]),
+    ]
+    with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
+        results = {r[0]: r for r in pool.map(run, jobs)}
+    for name, (_, out, stdout, stderr, code) in results.items():
+        if name != "asymmetric-fraction" and code != 0:
+            sys.exit(f"{name}: exit {code}\n{stdout}\n{stderr}")
+    outputs = {name: sleeve_outputs(r[1]) for name, r in results.items() if name != "asymmetric-fraction"}
+    measured = {}
+
+    # ---- 1. The imposed pipe temperature ----
+    base, imposed = outputs["circular"], outputs["imposed"]
+    m = imposed["summary"]["contact_nodes"]
+    first = next(i for i, r in enumerate(imposed["history"]) if int(r["contact_nodes"]) > 0)
+    check(imposed["history"][:first + 1] == base["history"][:first + 1]
+          and imposed["points"][:first + 1] == base["points"][:first + 1],
+          f"imposed: up to the first contact (step {first + 1}) history.csv and points.csv are sleeve-circular's")
+    hist, pts = imposed["history"], imposed["points"]
+    after = [i for i in range(1, len(hist)) if int(hist[i - 1]["contact_nodes"]) == m]
+    mean_dev = max(abs(float(hist[i]["T_inner_mean"]) - TPIPE) for i in after) if after else float("inf")
+    point_dev = max((abs(float(pts[i][f"T_{p}_C"]) + 273.15 - TPIPE) for i in after
+                     for p in ("x_axis", "diagonal", "y_axis")), default=float("inf"))
+    check(len(after) >= 500 and mean_dev <= 1e-6 and point_dev <= 1e-6,
+          f"imposed: at the {len(after)} steps after one with all {m} nodes touching, the contact nodes' mean "
+          f"temperature is Tpipe = {TPIPE} K within {mean_dev:.1e} K, the three points' within {point_dev:.1e} K")
+    measured["imposed_pipe_temperature"] = {
+        "Tpipe_K": TPIPE, "first_contact_step": first + 1, "steps_checked": len(after),
+        "mean_T_deviation_K": mean_dev, "points_T_deviation_K": point_dev,
+        "austenite_step": imposed["summary"]["austenite_step"],
+        "austenite_step_circular": base["summary"]["austenite_step"],
+        "final_pressure_Pa": imposed["summary"]["final_pressure_mean"]}
+
+    # ---- 2. The superellipse ----
+    se2, ell, se = outputs["superellipse-p2"], outputs["elliptic"], outputs["superellipse"]
+    out2, out = results["superellipse-p2"][2], results["superellipse"][2]
+    gap_diff = number(r"plugin's ellipse: gaps {} m", out2)
+    normal_diff = number(r"plugin's ellipse: gaps \S+ m, normals {}", out2)
+    check(gap_diff <= 1e-15 and normal_diff <= 1e-12,
+          f"superellipse p = 2: gaps equal the plugin's ellipse within {gap_diff:.1e} m, normals within {normal_diff:.1e}")
+    residuals = {}
+    for label, text in (("p2", out2), ("default", out)):
+        residuals[label] = (number(r"closest points on the curve to {},", text),
+                            number(r"normals along its gradient to {}", text))
+        check(residuals[label][0] <= 1e-12 and residuals[label][1] <= 1e-12,
+              f"superellipse {label}: closest points on the curve to {residuals[label][0]:.1e}, normals along "
+              f"its gradient to {residuals[label][1]:.1e}")
+    final_ell = ell["summary"]["final_pressure_mean"]
+    curve_dev = max(abs(float(a["pressure_mean"]) - float(b["pressure_mean"]))
+                    for a, b in zip(se2["history"], ell["history"])) / final_ell
+    final_dev = abs(se2["summary"]["final_pressure_mean"] / final_ell - 1)
+    check(len(se2["history"]) == len(ell["history"]) and curve_dev <= 1e-5 and final_dev <= 1e-6
+          and se2["summary"]["first_contact_step"] == ell["summary"]["first_contact_step"],
+          f"superellipse p = 2 reproduces sleeve-elliptic: mean pressure within {curve_dev:.1e} of the final "
+          f"value at every step, final within {final_dev:.1e}, first contact at step {se2['summary']['first_contact_step']}")
+    first_touch = {}
+    for p in ("x_axis", "diagonal", "y_axis"):
+        first_touch[p] = next((i + 1 for i, r in enumerate(se["points"]) if float(r[f"pressure_{p}_GPa"]) > 0), None)
+    in_contact = se["summary"]["final_nodes_in_contact"]
+    check(None not in first_touch.values() and first_touch["diagonal"] < min(first_touch["x_axis"], first_touch["y_axis"])
+          and in_contact == se["summary"]["contact_nodes"],
+          f"superellipse default: the corner touches first (steps {first_touch}), {in_contact} of "
+          f"{se['summary']['contact_nodes']} nodes touch at the end")
+    measured["superellipse"] = {
+        "p2_gap_difference_m": gap_diff, "p2_normal_difference": normal_diff,
+        "p2_curve_deviation_over_final": curve_dev, "p2_final_deviation": final_dev,
+        "closest_point_residuals": residuals, "default_first_touch_steps": first_touch,
+        "default_final_pressure_Pa": se["summary"]["final_pressure_mean"],
+        "default_final_non_uniformity": se["summary"]["final_pressure_non_uniformity"],
+        "default_final_nodes_in_contact": in_contact}
+
+    # ---- 3. Plane stress against Lame ----
+    g = geometry()
+    ps = outputs["plane-stress"]["summary"]
+    E, nu = ps["parameters"]["E"], ps["parameters"]["nu"]
+    Ri, Ro, pipe = g["Ri"], g["Ri"] + g["Hr"], ps["parameters"]["pipe_A"]
+    lame_stress = lame_pressure(E, nu, Ri, Ro, pipe - Ri, "stress")
+    lame_strain = lame_pressure(E, nu, Ri, Ro, pipe - Ri, "strain")
+    err = abs(ps["final_pressure_mean"] / lame_stress - 1)
+    check(ps["parameters"]["plane"] == "stress" and err <= 1e-3,
+          f"plane stress: final pressure {ps['final_pressure_mean'] / 1e6:.4f} MPa, Lame plane stress "
+          f"{lame_stress / 1e6:.4f} MPa (relative {err:.1e}; plane strain's Lame {lame_strain / 1e6:.4f} MPa)")
+    measured["plane_stress"] = {"final_pressure_Pa": ps["final_pressure_mean"], "lame_plane_stress_Pa": lame_stress,
+                                "lame_plane_strain_Pa": lame_strain, "relative_error": err,
+                                "first_contact_step": ps["first_contact_step"]}
+
+    # ---- 4. The asymmetric law ----
+    files = ("history.csv", "points.csv", "contact-final.csv")
+    ref = results["circular-onoff"][1]
+    stats = {}
+    for name in ("asymmetric-1", "asymmetric-075"):
+        text = results[name][2]
+        stats[name] = {"calls": number(r"ratio \S+, {} asymmetric local steps", text),
+                       "compressed_max": number(r"at most {} points compressed", text),
+                       "m2_max": number(r"and {} in martensite 2", text),
+                       "trace_min": number(r"smallest trace {}", text),
+                       "identical_to_onoff": same_files(results[name][1], ref, files)}
+    s1, s75 = stats["asymmetric-1"], stats["asymmetric-075"]
+    check(s1["identical_to_onoff"] and s1["calls"] > 0,
+          f"asymmetric -ratio 1: {s1['calls']:.0f} asymmetric steps, files identical to sleeve-circular -phasemodel onoff")
+    check(s75["identical_to_onoff"] and s75["compressed_max"] == 0 and s75["m2_max"] == 0,
+          f"asymmetric -ratio 0.75: identical too, no point ever compressed (smallest trace {s75['trace_min']:.2e}), "
+          f"none in martensite 2")
+    _, _, stdout, stderr, code = results["asymmetric-fraction"]
+    errors = [ln for ln in (stdout + stderr).splitlines() if ln.startswith("error:")]  # cerr: stdout
+    check(code != 0 and len(errors) == 1 and "-phasemodel onoff" in errors[0],
+          f"asymmetric -phasemodel fraction fails (exit {code}) naming -phasemodel onoff")
+    measured["asymmetric_law"] = stats
+
+    wall = time.time() - start
+    print(f"info {len(jobs)} runs in {wall:.1f} s")
+    record("variant_sleeve", {"test": "variant_sleeve", "runs": COARSE, "wall_seconds": wall, **measured})
+    finish()
+
+
+if __name__ == "__main__":
+    main()
