@@ -1,16 +1,19 @@
 # SMA coupling sleeves (Pagano, Alart, Lebon 1998): FreeFEM scenes with a C++ load plugin.
 #   make run  [SCENE=<scene>] [ARGS='-name value ...']   install, build, run a scene, draw its figures
+#                                                        (ARGS=-help: list the scene's options only)
 #   make test                                            install, build, pass every test (ctest)
 #   make figures                                         every paper figure beside ours: docs/figures.md
 #   make bench                                           speed against error: docs/benchmarks.md
 #   make ensemble [NP=2] [SEEDS=8] [OUT=dir] [ARGS=...]  Monte Carlo over seeds of sleeve-random-threshold on MPI
-#   make docs                                            regenerate docs/parameter-reference.md from the scenes
+#   make docs                                            regenerate docs/parameter-reference.md (scenes' -help)
 SHELL := /bin/bash
 .DEFAULT_GOAL := run
 
 SCENES := $(sort $(basename $(notdir $(wildcard edp/scenes/*.edp))))
 SCENE ?= sleeve-circular
 ARGS ?=
+# -help among ARGS: the script lists its options and stops (edp/lib/errors.idp); nothing to draw.
+HELP := $(filter -help,$(ARGS))
 PYTHON := /usr/bin/python3
 FF := tools/ff
 
@@ -101,9 +104,11 @@ check-scene:
 
 run: check-scene plugin meshes
 	$(FF) edp/scenes/$(SCENE).edp $(ARGS)
+ifeq ($(HELP),)
 	@if [ -f tools/plot_$(SCENE).py ]; then $(PYTHON) tools/plot_$(SCENE).py results/$(SCENE); \
 	 elif [[ "$(SCENE)" == sleeve-* ]]; then $(PYTHON) tools/plot_sleeve.py results/$(SCENE); fi
 	@echo "results in results/$(SCENE)/"
+endif
 
 test: plugin meshes
 	@mkdir -p build && cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > build/cmake.log 2>&1 || \
@@ -125,16 +130,19 @@ ensemble: plugin meshes
 	@OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_mpi_yield_when_idle=1 \
 	  FF_INCLUDEPATH="$(CURDIR)/edp/lib;$(CURDIR)/edp/model;$(CURDIR)/edp/solvers;$(CURDIR)/edp/problems;/usr/include/freefem++/idp;./" \
 	  ff-mpirun -np $(NP) edp/ensemble/sleeve-random-ensemble.edp -v 0 -seeds $(SEEDS) -out $(OUT) $(ARGS)
+ifeq ($(HELP),)
 	@$(PYTHON) tools/plot_ensemble.py $(OUT)
 	@echo "results in $(OUT)/"
+endif
 
 figures: test
 	@for scene in $(FIGURE_SCENES); do \
 	  $(MAKE) --no-print-directory run SCENE=$$scene ARGS='-quiet 1' || exit 1; done
 	@$(PYTHON) tools/figures.py
 
-# Every option of every scene and variant, from the sources (tools/param_reference.py says how).
-docs:
+# Every option of every scene, variant, benchmark and the ensemble, as each prints them with
+# -help tsv (tools/param_reference.py says how; about 1 s).
+docs: plugin
 	@$(PYTHON) tools/param_reference.py
 
 clean:
