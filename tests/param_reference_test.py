@@ -35,11 +35,13 @@ import param_reference  # noqa: E402
 # Scripts whose every option must have a meaning (getARGV's third argument). Add a script here
 # once its options are converted (the sleeve scenes: edp/lib/sleeve.idp, sleeve-radial.edp).
 DOCUMENTED = ["beam", "free-ring", "ring-lame", "beam-asymmetric", "beam-p2", "ring-lobed", "kernels",
-              "sleeve-random-ensemble"]
+              "sleeve-random-ensemble", "sleeve-circular", "sleeve-circular-gvar", "sleeve-circular-single",
+              "sleeve-elliptic", "sleeve-elliptic-friction", "sleeve-offset", "sleeve-radial",
+              "sleeve-random-threshold", "sleeve-asymmetric-law", "sleeve-imposed-pipe-temperature",
+              "sleeve-plane-stress", "sleeve-superellipse"]
 # Options read by library files that are not converted yet: allowed without a meaning, for now.
 # Delete an entry once its file gives the meaning (the test fails while an entry is not needed).
-PENDING = {"-meshminquality": "edp/lib/mesh.idp", "-phasemodel": "edp/lib/dct.idp",
-           "-fprelax": "edp/lib/dct.idp"}
+PENDING = {}
 PROBE = "-paramreferenceprobe"
 FF = os.path.join(ROOT, "tools", "ff")
 # A line of -help text (errors.idp's header): name, type, default (a string in quotes), meaning.

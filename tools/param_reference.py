@@ -64,7 +64,7 @@ def help_command(path, kind, fmt="tsv"):
     help_args = ["-help"] + ([fmt] if fmt else [])
     if kind == "ensemble":
         env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-                   FF_INCLUDEPATH=f"{ROOT}/edp/lib;/usr/include/freefem++/idp;./")
+                   FF_INCLUDEPATH=f"{ROOT}/edp/lib;{ROOT}/edp/model;{ROOT}/edp/solvers;{ROOT}/edp/problems;/usr/include/freefem++/idp;./")
         return ["mpiexec", "--oversubscribe", "-np", "1", "FreeFem++-mpi", "-nw", "-ne", "-v", "0", path] \
             + help_args, env
     return [os.path.join(ROOT, "tools", "ff"), path] + help_args, None
