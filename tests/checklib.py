@@ -6,6 +6,8 @@ import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+from units import KELVIN_AT_0C  # noqa: E402,F401  (re-exported for the tests)
 TEST_RESULTS = os.path.join(ROOT, "build", "test-results")
 failures = []
 

@@ -37,7 +37,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools"))
 
-from checklib import ROOT, TEST_RESULTS, check, finish, record, run_scene, sleeve_outputs, sleeve_geometry  # noqa: E402
+from checklib import KELVIN_AT_0C, ROOT, TEST_RESULTS, check, finish, record, run_scene, sleeve_outputs, sleeve_geometry  # noqa: E402
 from lame import lame_pressure  # noqa: E402
 
 COARSE = ["-mesh", "meshes/sleeve-coarse.msh", "-quiet", "1"]
@@ -219,9 +219,9 @@ def large_steps(fine, E, nu):
         entry = {"dt_s": dt, "final_pressure_Pa": s["final_pressure_mean"], "lame_error": err,
                  "final_fraction_austenite": austenite, "diff_from_1500_steps": diff,
                  "first_contact_step": first, "first_contact_time_s": first * dt,
-                 "T_inner_first_contact_C": s["T_inner_first_contact"] - 273.15,
+                 "T_inner_first_contact_C": s["T_inner_first_contact"] - KELVIN_AT_0C,
                  "reversion_step": reversion, "austenite_step": s["austenite_step"],
-                 "T_inner_austenite_C": s["T_inner_austenite"] - 273.15,
+                 "T_inner_austenite_C": s["T_inner_austenite"] - KELVIN_AT_0C,
                  "linear_phase_steps": reversion - first, "peak_pressure_Pa": s["peak_pressure_mean"],
                  "iterations": iteration_stats(hist)}
         print(f"info {n} steps: contact at {first * dt:.1f} s ({entry['T_inner_first_contact_C']:.2f} C inner), "
@@ -275,7 +275,7 @@ def random_threshold(reference):
               f"{homogeneous / 1e6:.6f} MPa")
         result.update(cycles=len(notes), max_residual=worst, final_pressure_Pa=final,
                       bisections=[n[3] for n in notes], lambdas=[n[1] for n in notes],
-                      T_inner_austenite_C=run["summary"]["T_inner_austenite"] - 273.15)
+                      T_inner_austenite_C=run["summary"]["T_inner_austenite"] - KELVIN_AT_0C)
     onoff = [*COARSE, "-steps", "300", "-phasemodel", "onoff"]
     ref_out = run_scene("sleeve-circular", "hard-reference-300-onoff", *onoff)
     same_out = run_scene("sleeve-circular", "hard-relax-no-cycle", *onoff, "-fprelax", "1")

@@ -26,7 +26,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from checklib import check, finish, record, rows, run_scene, sleeve_outputs  # noqa: E402
+from checklib import KELVIN_AT_0C, check, finish, record, rows, run_scene, sleeve_outputs  # noqa: E402
 
 
 def load(out):
@@ -36,7 +36,7 @@ def load(out):
         radius[float(r["phase"]) != 0].append(math.hypot(float(r["x"]), float(r["y"])))
     run = sleeve_outputs(out)
     return {"summary": run["summary"],
-            "history": [(float(r["T_inner_mean"]) - 273.15, float(r["pressure_mean"])) for r in run["history"]],
+            "history": [(float(r["T_inner_mean"]) - KELVIN_AT_0C, float(r["pressure_mean"])) for r in run["history"]],
             "austenite_radius": sum(radius[0]) / len(radius[0]),
             "martensite_radius": sum(radius[1]) / max(1, len(radius[1]))}
 
@@ -60,7 +60,7 @@ def main():
             for n, r in (("constant", const), ("gvar", gvar))}
     check(jump["gvar"] < jump["constant"], f"more regular: largest one-step rise {jump['gvar'] / 1e6:.2f} MPa "
           f"< {jump['constant'] / 1e6:.2f} MPa with constant g")
-    T_first = gvar["summary"]["T_inner_first_contact"] - 273.15
+    T_first = gvar["summary"]["T_inner_first_contact"] - KELVIN_AT_0C
     grid = [T_first + k * 0.5 for k in range(int((-35 - T_first) / 0.5) + 1)]
     diffs = [pressure_at(gvar["history"], T) - pressure_at(const["history"], T) for T in grid]
     check(max(diffs) <= 0 and min(diffs) < 0,
@@ -68,8 +68,8 @@ def main():
           f"{T_first:.1f} C, largest excess {max(diffs) / 1e6:.3f} MPa, largest deficit {-min(diffs) / 1e6:.2f} MPa")
     s = gvar["summary"]
     T_final = gvar["history"][-1][0]
-    Tinit = s["parameters"]["Tinit"] - 273.15
-    T_max_level = s["T_inner_austenite"] - 273.15
+    Tinit = s["parameters"]["Tinit"] - KELVIN_AT_0C
+    T_max_level = s["T_inner_austenite"] - KELVIN_AT_0C
     check(T_max_level < (Tinit + T_final) / 2,
           f"final level reached at inner {T_max_level:.1f} C, before half the warming "
           f"({Tinit:.1f} C -> {T_final:.1f} C, half {0.5 * (Tinit + T_final):.1f} C)")
@@ -84,7 +84,7 @@ def main():
         "martensite_radius_m": {"constant": const["martensite_radius"], "gvar": gvar["martensite_radius"]},
         "largest_rise_Pa": jump, "largest_excess_below_minus35C_Pa": max(diffs),
         "largest_deficit_below_minus35C_Pa": -min(diffs),
-        "T_inner_all_austenite_C": {"constant": const["summary"]["T_inner_austenite"] - 273.15,
+        "T_inner_all_austenite_C": {"constant": const["summary"]["T_inner_austenite"] - KELVIN_AT_0C,
                                     "gvar": T_max_level},
         "t_all_austenite_s": {"constant": const["summary"]["austenite_step"] * const["summary"]["parameters"]["dt"],
                               "gvar": s["austenite_step"] * s["parameters"]["dt"]},

@@ -22,7 +22,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from checklib import check, finish, record, run_scene  # noqa: E402
+from checklib import KELVIN_AT_0C, check, finish, record, run_scene  # noqa: E402
 
 FILES = ["history.csv", "points.csv", "contact-final.csv", "fields-1-dilated.csv",
          "fields-2-contact.csv", "fields-3-end.csv"]
@@ -59,15 +59,15 @@ def main():
     check(abs(s["final_pressure_mean"] / summary["homogeneous"]["final_pressure_mean"] - 1) < 1e-6,
           f"same final level as the homogeneous ring once all austenite: {s['final_pressure_mean'] / 1e6:.4f} "
           f"vs {summary['homogeneous']['final_pressure_mean'] / 1e6:.4f} MPa")
-    print(f"info austenite for good at inner {s['T_inner_austenite'] - 273.15:.1f} C (homogeneous "
-          f"{summary['homogeneous']['T_inner_austenite'] - 273.15:.1f} C)")
+    print(f"info austenite for good at inner {s['T_inner_austenite'] - KELVIN_AT_0C:.1f} C (homogeneous "
+          f"{summary['homogeneous']['T_inner_austenite'] - KELVIN_AT_0C:.1f} C)")
     record("sleeve_random_threshold", {
         "test": "sleeve_random_threshold", "mesh": "meshes/sleeve-coarse.msh", "steps": s["n_steps"],
         "spread_K": spread, "law": s["parameters"]["threshold_law"], "triangles": n,
         "sample_std_K": s["T0_local_std"], "sample_mean_K": s["T0_local_mean"],
         "identical_files_same_seed": same, "different_files_other_seed": differ,
         "node_peak_over_final": peaks,
-        "T_inner_austenite_C": {k: v["T_inner_austenite"] - 273.15 for k, v in summary.items()},
+        "T_inner_austenite_C": {k: v["T_inner_austenite"] - KELVIN_AT_0C for k, v in summary.items()},
         "final_pressure_Pa": {k: v["final_pressure_mean"] for k, v in summary.items()}})
     finish()
 

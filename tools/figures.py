@@ -13,6 +13,7 @@ import shutil
 import sys
 
 from plot_sleeve import read_csv
+from units import KELVIN_AT_0C
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RESULTS = os.path.join(ROOT, "results")
@@ -116,8 +117,8 @@ def main():
                 f"zero for {c['first_contact_step'] - 1} steps, linear with R^2 = {c['linear_r2']:.5f} "
                 f"({c['linear_slope_Pa_per_K'] / 1e6:.3f} MPa/K), jumps up to {c['largest_jump_Pa'] / 1e6:.2f} MPa "
                 f"per step, constant to {c['final_spread']:.1e}. Default run: first contact at step "
-                f"{s['first_contact_step']} (inner {s['T_inner_first_contact'] - 273.15:.1f} C), all austenite "
-                f"for good from step {s['austenite_step']} ({s['T_inner_austenite'] - 273.15:.1f} C), final "
+                f"{s['first_contact_step']} (inner {s['T_inner_first_contact'] - KELVIN_AT_0C:.1f} C), all austenite "
+                f"for good from step {s['austenite_step']} ({s['T_inner_austenite'] - KELVIN_AT_0C:.1f} C), final "
                 f"{mpa(s['final_pressure_mean'])} uniform within {100 * s['final_pressure_non_uniformity']:.2f} %. "
                 "Temperature in circular bands (the fields). Differs: with exchange on both faces the reversion "
                 "starts on the outer side here (austenite at a larger mean radius than martensite, "
@@ -231,7 +232,7 @@ def main():
                 f"temperature T0 drawn per triangle, {s['parameters']['threshold_law']}, standard deviation "
                 f"{s['parameters']['threshold_spread_K']} K (seed {s['parameters']['seed']}; sample "
                 f"{s['T0_local_std']:.2f} K): all austenite for good at inner "
-                f"{s['T_inner_austenite'] - 273.15:.1f} C instead of about -55 C; the highest node peaks "
+                f"{s['T_inner_austenite'] - KELVIN_AT_0C:.1f} C instead of about -55 C; the highest node peaks "
                 f"{s['node_peak_over_final_max']:.2f} x its final force (at "
                 f"{s['node_peak_over_final_angle_deg']:.0f} degrees; coarse test: "
                 f"{c['node_peak_over_final']['seed1']:.2f} and {c['node_peak_over_final']['seed2']:.2f} x for two "

@@ -22,6 +22,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from plot_sleeve import read_csv, save  # noqa: E402
+from units import KELVIN_AT_0C  # noqa: E402
 
 
 def force_temperature(outdir, summary, others):
@@ -31,7 +32,7 @@ def force_temperature(outdir, summary, others):
     curves += [(path, os.path.relpath(os.path.dirname(path))) for path in others]
     for path, label in curves:
         h = read_csv(path)
-        ax.plot([T - 273.15 for T in h["T_inner_mean"]], [p / 1e6 for p in h["pressure_mean"]],
+        ax.plot([T - KELVIN_AT_0C for T in h["T_inner_mean"]], [p / 1e6 for p in h["pressure_mean"]],
                 lw=1, label=label)
     ax.axhline(summary["lame_pressure"] / 1e6, color="k", ls=":", lw=0.8, label="Lame shrink fit")
     ax.set_xlabel("inner-surface temperature (C)")
@@ -72,7 +73,7 @@ def fields(outdir, summary):
         label = f"{os.path.basename(path)[len('fields-'):-len('.csv')]} ({when})"
         line, = axes[0].plot(r_mm, [v / 1e6 for v in d["sigma_rr"]], lw=1, label=label)
         axes[0].plot(r_mm, [v / 1e6 for v in d["sigma_tt"]], lw=1, ls="--", color=line.get_color())
-        axes[1].plot(r_mm, [T - 273.15 for T in d["T"]], lw=1, color=line.get_color())
+        axes[1].plot(r_mm, [T - KELVIN_AT_0C for T in d["T"]], lw=1, color=line.get_color())
         axes[2].step(r_mm, d["phase"], where="mid", lw=1, color=line.get_color())
     axes[0].set_title("sigma_rr (solid), sigma_tt (dashed), MPa", fontsize=9)
     axes[1].set_title("temperature (C)", fontsize=9)

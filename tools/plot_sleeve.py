@@ -13,6 +13,7 @@ import glob
 import json
 import os
 import sys
+from units import KELVIN_AT_0C
 
 import matplotlib
 
@@ -85,7 +86,7 @@ def fields(outdir, scene):
         for ax, key, label, scale in ((axes[0], "sigma_rr", "radial stress (MPa)", 1e-6),
                                       (axes[1], "T", "temperature (C)", None),
                                       (axes[2], "phase", "phase (0 A, 1 M1, 2 M2)", 1)):
-            values = [v - 273.15 for v in d[key]] if key == "T" else [v * scale for v in d[key]]
+            values = [v - KELVIN_AT_0C for v in d[key]] if key == "T" else [v * scale for v in d[key]]
             c = ax.tricontourf(tri, values, levels=20 if key != "phase" else [-0.5, 0.5, 1.5, 2.5])
             fig.colorbar(c, ax=ax, shrink=0.8)
             ax.set_aspect("equal")
