@@ -10,7 +10,9 @@ mesh radially. Asserts, with a 60 um interference and a 12 mm thickness (both un
     (radial, nr 40);
   - the 2D summary's ring inner radius is -pipeA minus the interference (to 1e-12 m);
   - the defaults equal the geometry file (the radial summary's ring_inner_radius, thickness);
-  - -Ri with -interference together fails, naming both.
+  - -Ri with -interference together fails, naming both;
+  - and one option trap of the same kind (issue 17): -g alone also sets the contact exchange
+    (-gcontact defaults to -g), so the summary's g_contact is the -g given.
 Records results/checks/sleeve_geometry.json.
 """
 import json
@@ -55,6 +57,10 @@ def main():
     said = both.stdout + both.stderr  # FreeFEM writes cerr to stdout
     check(both.returncode != 0 and "give -Ri or -interference" in said,
           f"-Ri with -interference: exit {both.returncode}, output {said.strip()[-200:]!r}")
+    g_only = summary(run_scene("sleeve-radial", "geometry-g-only", "-quiet", "1", "-nr", "10", "-steps", "20",
+                               "-g", "1000"))["parameters"]
+    check(g_only["g"] == 1000 and g_only["g_contact"] == 1000,
+          f"-g 1000 alone: g {g_only['g']}, g_contact {g_only['g_contact']} (must follow -g)")
     record("sleeve_geometry", {"interference_m": delta, "thickness_m": thickness, "lame_Pa": lame,
                                "pressure_2d_Pa": p2, "pressure_radial_Pa": pr, "error_2d": e2, "error_radial": er,
                                "geometry_file": g})
