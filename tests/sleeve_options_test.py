@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""The sleeve's geometry as options (issue 14): -interference, -Ri and -thickness.
+"""The sleeve's options beyond the material: the geometry (issue 14: -interference, -Ri,
+-thickness) and the heat and time options of issue 17 (-gcontact following -g, -Tpipe, -gpipe, -dt).
 
 meshes/sleeve-geometry.txt is the one place of the ring's and pipe's dimensions: the Makefile
 meshes the ring from it, the radial model and the -pipeA default read it. The 2D model takes its
@@ -12,8 +13,12 @@ mesh radially. Asserts, with a 60 um interference and a 12 mm thickness (both un
   - the defaults equal the geometry file (the radial summary's ring_inner_radius, thickness);
   - -Ri with -interference together fails, naming both;
   - and one option trap of the same kind (issue 17): -g alone also sets the contact exchange
-    (-gcontact defaults to -g), so the summary's g_contact is the -g given.
-Records results/checks/sleeve_geometry.json.
+    (-gcontact defaults to -g), so the summary's g_contact is the -g given;
+  - -dt 0.3 over 150 s is -steps 500: the same history.csv byte for byte;
+  - -Tpipe: a radial ring insulated outside (-g 0) and exchanging only with the pipe (-gpipe 500,
+    -gcontact 500) tends to the pipe's temperature: after 2e5 s (about 50 time constants of the
+    exchange) every node within 1e-6 K of -Tpipe 300 K, while -Text is 250 K.
+Records results/checks/sleeve_options.json.
 """
 import json
 import os
@@ -61,7 +66,21 @@ def main():
                                "-g", "1000"))["parameters"]
     check(g_only["g"] == 1000 and g_only["g_contact"] == 1000,
           f"-g 1000 alone: g {g_only['g']}, g_contact {g_only['g_contact']} (must follow -g)")
-    record("sleeve_geometry", {"interference_m": delta, "thickness_m": thickness, "lame_Pa": lame,
+    a = run_scene("sleeve-radial", "options-dt", "-quiet", "1", "-nr", "10", "-dt", "0.3")
+    b = run_scene("sleeve-radial", "options-steps", "-quiet", "1", "-nr", "10", "-steps", "500")
+    same = open(os.path.join(a, "history.csv"), "rb").read() == open(os.path.join(b, "history.csv"), "rb").read()
+    check(same and summary(a)["n_steps"] == 500, f"-dt 0.3 equals -steps 500 (history identical: {same})")
+    pipe = summary(run_scene("sleeve-radial", "options-tpipe", "-quiet", "1", "-nr", "10", "-steps", "200",
+                             "-tend", "2e5", "-g", "0", "-gpipe", "500", "-gcontact", "500", "-Text", "250",
+                             "-Tpipe", "300", "-rannacher", "200"))
+    with open(os.path.join(ROOT, "build", "test-results", "options-tpipe", "history.csv")) as f:
+        last = f.read().strip().splitlines()[-1].split(",")
+    tmin, tmax = float(last[3]), float(last[4])
+    off = max(abs(tmin - 300), abs(tmax - 300))
+    print(f"info -Tpipe 300 with the outside insulated: T in [{tmin}, {tmax}] K at the end")
+    check(off <= 1e-6 and pipe["parameters"]["T_pipe"] == 300, f"-Tpipe 300 (outside insulated): the ring "
+          f"ends {off:.2e} K from the pipe's temperature (> 1e-6)")
+    record("sleeve_options", {"interference_m": delta, "thickness_m": thickness, "lame_Pa": lame,
                                "pressure_2d_Pa": p2, "pressure_radial_Pa": pr, "error_2d": e2, "error_radial": er,
                                "geometry_file": g})
     finish()
