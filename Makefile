@@ -110,7 +110,12 @@ ifeq ($(HELP),)
 	@echo "results in results/$(SCENE)/"
 endif
 
+# A checkout copied or moved elsewhere keeps a build/CMakeCache.txt naming the old folder, which
+# cmake refuses: such a build/ is another checkout's and is rebuilt from scratch.
 test: plugin meshes
+	@if [ -f build/CMakeCache.txt ] && ! grep -qx "CMAKE_HOME_DIRECTORY:INTERNAL=$(CURDIR)" build/CMakeCache.txt; then \
+	  echo "build/ was configured for another folder ($$(sed -n 's/^CMAKE_HOME_DIRECTORY:INTERNAL=//p' build/CMakeCache.txt)): rebuilding it"; \
+	  rm -rf build; fi
 	@mkdir -p build && cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > build/cmake.log 2>&1 || \
 	  { mkdir -p build; cmake -S . -B build -DCMAKE_BUILD_TYPE=Release; }
 	@cmake --build build -j2
