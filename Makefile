@@ -1,5 +1,6 @@
 # SMA coupling sleeves (Pagano, Alart, Lebon 1998): FreeFEM scenes with a C++ load plugin.
 #   make run  [SCENE=<scene>] [ARGS='-name value ...']   install, build, run a scene, draw its figures
+#                                                        (SCENE may also name a variant of edp/variants)
 #                                                        (ARGS=-help: list the scene's options only)
 #   make test                                            install, build, pass every test (ctest)
 #   make figures                                         every paper figure beside ours: docs/figures.md
@@ -10,6 +11,8 @@ SHELL := /bin/bash
 .DEFAULT_GOAL := run
 
 SCENES := $(sort $(basename $(notdir $(wildcard edp/scenes/*.edp))))
+# The variants of docs/variants.md run the same way (make run SCENE=<variant>), into results/variants/.
+VARIANTS := $(sort $(basename $(notdir $(wildcard edp/variants/*.edp))))
 SCENE ?= sleeve-circular
 ARGS ?=
 # -help among ARGS: the script lists its options and stops (edp/lib/errors.idp); nothing to draw.
@@ -99,15 +102,20 @@ check-scene:
 	@if [[ ! "$$SCENE_NAME" =~ ^[A-Za-z0-9_-]+$$ ]]; then \
 	  echo "error: SCENE='$$SCENE_NAME' is not a scene name (letters, digits, - and _ only)" >&2; \
 	  echo "scenes: $(SCENES)" >&2; exit 2; fi
-	@if [[ " $(SCENES) " != *" $$SCENE_NAME "* ]]; then \
-	  echo "error: unknown scene '$$SCENE_NAME'" >&2; echo "scenes: $(SCENES)" >&2; exit 2; fi
+	@if [[ " $(SCENES) $(VARIANTS) " != *" $$SCENE_NAME "* ]]; then \
+	  echo "error: unknown scene '$$SCENE_NAME'" >&2; echo "scenes: $(SCENES)" >&2; \
+	  echo "variants: $(VARIANTS)" >&2; exit 2; fi
 
+IS_VARIANT = $(filter $(SCENE),$(VARIANTS))
+RUN_SCRIPT = $(if $(IS_VARIANT),edp/variants,edp/scenes)/$(SCENE).edp
+RUN_RESULTS = $(if $(IS_VARIANT),results/variants,results)/$(SCENE)
 run: check-scene plugin meshes
-	$(FF) edp/scenes/$(SCENE).edp $(ARGS)
+	$(FF) $(RUN_SCRIPT) $(ARGS)
 ifeq ($(HELP),)
-	@if [ -f tools/plot_$(SCENE).py ]; then $(PYTHON) tools/plot_$(SCENE).py results/$(SCENE); \
-	 elif [[ "$(SCENE)" == sleeve-* ]]; then $(PYTHON) tools/plot_sleeve.py results/$(SCENE); fi
-	@echo "results in results/$(SCENE)/"
+	@if [ -f tools/plot_$(SCENE).py ]; then $(PYTHON) tools/plot_$(SCENE).py $(RUN_RESULTS); \
+	 elif [[ "$(SCENE)" == sleeve-* ]]; then $(PYTHON) tools/plot_sleeve.py $(RUN_RESULTS); \
+	 elif [ -n "$(IS_VARIANT)" ]; then $(PYTHON) tools/plot_variants.py --only $(SCENE) results/variants $(RUN_RESULTS); fi
+	@echo "results in $(RUN_RESULTS)/"
 endif
 
 # A checkout copied or moved elsewhere keeps a build/CMakeCache.txt naming the old folder, which

@@ -4,7 +4,8 @@
   asymmetric-phases.png   beam phase zones, symmetric law against alpha_minus < alpha_plus (medium mesh)
   lobed-pressure.png      contact pressure and tangential density along the ring, circle and lobed pipe
   p2-convergence.png      beam tip deflection against degrees of freedom, P1 and P2
-Usage: tools/plot_variants.py [results/variants] [docs/variants]
+Usage: tools/plot_variants.py [--only <variant>] [results/variants] [docs/variants]
+  (--only: the one figure of that variant, e.g. into its results folder: make run SCENE=beam-p2)
 """
 import json
 import os
@@ -87,12 +88,19 @@ def p2(src, dst):
 
 
 def main():
-    src = sys.argv[1] if len(sys.argv) > 1 else "results/variants"
-    dst = sys.argv[2] if len(sys.argv) > 2 else "docs/variants"
+    args = sys.argv[1:]
+    only = None
+    if args[:1] == ["--only"]:
+        only, args = args[1], args[2:]
+    src = args[0] if len(args) > 0 else "results/variants"
+    dst = args[1] if len(args) > 1 else "docs/variants"
     os.makedirs(dst, exist_ok=True)
-    asymmetric(os.path.join(src, "beam-asymmetric"), dst)
-    lobed(os.path.join(src, "ring-lobed"), dst)
-    p2(os.path.join(src, "beam-p2"), dst)
+    figures = {"beam-asymmetric": asymmetric, "ring-lobed": lobed, "beam-p2": p2}
+    if only is not None and only not in figures:
+        sys.exit(f"error: no figure of variant {only!r} here (figures: {', '.join(figures)})")
+    for name, draw in figures.items():
+        if only in (None, name):
+            draw(os.path.join(src, name), dst)
 
 
 if __name__ == "__main__":
