@@ -223,15 +223,21 @@ Figures coulomb_against_siconos(const PsorSettings& psor, double slip_tol, bool 
   return figures;
 }
 
+// What both Coulomb runs assert: all 60 problems solved, every reaction within 1e-8 of Siconos',
+// and both regimes exercised (more than 5 sliding and 5 sticking nodes).
+void expect_coulomb_agreement(const Figures& figures) {
+  EXPECT_EQ(figures.cases, 60);
+  EXPECT_LE(figures.worst, 1e-8);
+  EXPECT_GT(figures.sliding, 5);
+  EXPECT_GT(figures.sticking, 5);
+}
+
 // Tight tolerances (PSOR 1e-15, slip 1e-13) on the scenes' omega and polish: the fixed point's
 // limit is the Coulomb solution.
 TEST(SiconosOracle, CoulombFixedPointEqualsFc2dNsgs) {
   const Figures figures = coulomb_against_siconos({kScenePsor.omega, 1e-15, kScenePsor.maxit,
                                                    kScenePsor.polish}, 1e-13, true);
-  EXPECT_EQ(figures.cases, 60);
-  EXPECT_LE(figures.worst, 1e-8);
-  EXPECT_GT(figures.sliding, 5);
-  EXPECT_GT(figures.sticking, 5);
+  expect_coulomb_agreement(figures);
   write_figures("siconos_coulomb",
                 "scenes' slip-threshold fixed point around psor_condensed (omega 1.88, polish 10, "
                 "PSOR tol 1e-15, slip tol 1e-13) against Siconos fc2d_nsgs_dense (tol 1e-15)",
@@ -244,10 +250,7 @@ TEST(SiconosOracle, CoulombFixedPointEqualsFc2dNsgs) {
 // 9.1e-11, and at slip tol 1e-11 that trial does not converge.)
 TEST(SiconosOracle, CoulombSceneDefaultsNearFc2dNsgs) {
   const Figures figures = coulomb_against_siconos(kScenePsor, 1e-9, false);
-  EXPECT_EQ(figures.cases, 60);
-  EXPECT_LE(figures.worst, 1e-8);
-  EXPECT_GT(figures.sliding, 5);
-  EXPECT_GT(figures.sticking, 5);
+  expect_coulomb_agreement(figures);
   write_figures("siconos_coulomb_scene_defaults",
                 "scenes' slip-threshold fixed point around psor_condensed at the scenes' defaults "
                 "(PSOR [1.88, 1e-10, 100000, 10], slip tol 1e-9) against Siconos fc2d_nsgs_dense",
