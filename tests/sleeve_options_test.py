@@ -28,7 +28,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools"))
 
-from checklib import ROOT, check, finish, record, run_scene, sleeve_geometry, sleeve_outputs  # noqa: E402
+from checklib import ROOT, check, finish, record, rows, run_scene, sleeve_geometry, sleeve_outputs  # noqa: E402
 from lame import lame_pressure  # noqa: E402
 
 
@@ -70,12 +70,12 @@ def main():
     b = run_scene("sleeve-radial", "options-steps", "-quiet", "1", "-nr", "10", "-steps", "500")
     same = open(os.path.join(a, "history.csv"), "rb").read() == open(os.path.join(b, "history.csv"), "rb").read()
     check(same and summary(a)["n_steps"] == 500, f"-dt 0.3 equals -steps 500 (history identical: {same})")
-    pipe = summary(run_scene("sleeve-radial", "options-tpipe", "-quiet", "1", "-nr", "10", "-steps", "200",
-                             "-tend", "2e5", "-g", "0", "-gpipe", "500", "-gcontact", "500", "-Text", "250",
-                             "-Tpipe", "300", "-rannacher", "200"))
-    with open(os.path.join(ROOT, "build", "test-results", "options-tpipe", "history.csv")) as f:
-        last = f.read().strip().splitlines()[-1].split(",")
-    tmin, tmax = float(last[3]), float(last[4])
+    pipe_out = run_scene("sleeve-radial", "options-tpipe", "-quiet", "1", "-nr", "10", "-steps", "200",
+                         "-tend", "2e5", "-g", "0", "-gpipe", "500", "-gcontact", "500", "-Text", "250",
+                         "-Tpipe", "300", "-rannacher", "200")
+    pipe = summary(pipe_out)
+    last = rows(os.path.join(pipe_out, "history.csv"))[-1]
+    tmin, tmax = float(last["T_min"]), float(last["T_max"])
     off = max(abs(tmin - 300), abs(tmax - 300))
     print(f"info -Tpipe 300 with the outside insulated: T in [{tmin}, {tmax}] K at the end")
     check(off <= 1e-6 and pipe["parameters"]["T_pipe"] == 300, f"-Tpipe 300 (outside insulated): the ring "
