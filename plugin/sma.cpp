@@ -33,14 +33,35 @@
 //       (IEEE round to nearest even), in place; returns how many values changed.
 //   real SmaPluginVersion()  version stamp, checked by edp/lib/plugin.idp.
 //   real WallSeconds()       monotonic wall clock (s), for timings.
+// Result files, without a shell (plugin/core/files.hpp, json.hpp; edp/lib/output.idp wraps them):
+// each string function returns "" on success, else the reason naming the path.
+//   string FileMakeDirectory(string path)          mkdir -p
+//   string FileRename(string from, string to)      rename, replacing `to`
+//   string FileRemoveMatching(string dir, string patterns)   entries of dir matching the patterns
+//   int FileKind(string path)                      0 none, 1 file, 2 directory, 3 other
+//   int FileEndsWith(string path, string tail)     1 if the file ends with tail (+ white space)
+//   string ResultsClaim(string dir, string scene)  refuse a foreign folder, lock it for this run
+//                                                  (the lock goes when the process exits)
+//   string StreamWriteError(ofstream f)            flushes f; "" if every write so far succeeded
+//   string JsonFileError(string path)              "" if the file is valid JSON, finite numbers
+//   string JsonQuote(string s), string ShellQuote(string s)
 
 #include <ff++.hpp>
 #include <AFunction_ext.hpp>
 
+#include <cerrno>
 #include <chrono>
+#include <cstdlib>
+#include <cstring>
 #include <exception>
+#include <fstream>
+#include <sstream>
 #include <string>
+#include <unistd.h>
+#include <vector>
 
+#include "core/files.hpp"
+#include "core/json.hpp"
 #include "core/material.hpp"
 #include "core/obstacle.hpp"
 #include "core/psor.hpp"
@@ -222,7 +243,7 @@ long RoundToFloat(KN<double>* const& x) {
   return changed;
 }
 
-double SmaPluginVersion() { return 4.0; }
+double SmaPluginVersion() { return 5.0; }
 
 // FreeFEM's time() has a resolution of one second and clock() counts CPU time; timings of the
 // scenes are wall-clock seconds from a monotonic clock.
@@ -230,6 +251,60 @@ double WallSeconds() {
   using namespace std::chrono;
   return duration<double>(steady_clock::now().time_since_epoch()).count();
 }
+
+string* NewString(Stack stack, const std::string& text) { return Add2StackOfPtr2Free(stack, new string(text)); }
+
+string* FileMakeDirectory(Stack stack, string* const& path) {
+  return NewString(stack, sma::files::make_directory(*path));
+}
+string* FileRename(Stack stack, string* const& from, string* const& to) {
+  return NewString(stack, sma::files::rename_file(*from, *to));
+}
+string* FileRemoveMatching(Stack stack, string* const& dir, string* const& patterns) {
+  return NewString(stack, sma::files::remove_matching(*dir, *patterns));
+}
+long FileKind(string* const& path) { return sma::files::kind(*path); }
+long FileEndsWith(string* const& path, string* const& tail) { return sma::files::ends_with(*path, *tail); }
+
+// The folders this process locked: their locks are removed at exit, however the script ends
+// (normal end, Fail's exit(1), FreeFEM's own error exit). A killed process leaves a lock that the
+// next run finds stale (its process is gone) and takes.
+std::vector<std::string>& ClaimedFolders() {
+  static std::vector<std::string> folders;
+  return folders;
+}
+void ReleaseClaimedFolders() {
+  for (const auto& dir : ClaimedFolders()) sma::files::release_results(dir, (long)getpid());
+}
+string* ResultsClaim(Stack stack, string* const& dir, string* const& scene) {
+  std::string error = sma::files::claim_results(*dir, *scene, (long)getpid());
+  if (error.empty()) {
+    if (ClaimedFolders().empty()) std::atexit(ReleaseClaimedFolders);
+    ClaimedFolders().push_back(*dir);
+  }
+  return NewString(stack, error);
+}
+
+// FreeFEM never checks its ofstreams: a full disk leaves a short file and no message. Flushing
+// and reading the stream's state tells whether every write so far reached the file.
+string* StreamWriteError(Stack stack, std::ostream* const& stream) {
+  errno = 0;
+  stream->flush();
+  if (stream->good()) return NewString(stack, "");
+  const int saved = errno;
+  return NewString(stack, std::string("a write failed (") + (saved ? std::strerror(saved) : "disk full?") + ")");
+}
+
+string* JsonFileError(Stack stack, string* const& path) {
+  std::ifstream in(*path, std::ios::binary);
+  if (!in) return NewString(stack, "cannot read " + *path);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string error = sma::json::validate(text.str());
+  return NewString(stack, error.empty() ? "" : *path + " is not valid JSON: " + error);
+}
+string* JsonQuote(Stack stack, string* const& text) { return NewString(stack, sma::json::quote(*text)); }
+string* ShellQuote(Stack stack, string* const& text) { return NewString(stack, sma::files::shell_quote(*text)); }
 
 }  // namespace
 
@@ -249,6 +324,17 @@ static void Load_Init() {
   Global.Add("RoundToFloat", "(", new OneOperator1_<long, A>(RoundToFloat));
   Global.Add("SmaPluginVersion", "(", new OneOperator0<double>(SmaPluginVersion));
   Global.Add("WallSeconds", "(", new OneOperator0<double>(WallSeconds));
+  typedef string* S;
+  Global.Add("FileMakeDirectory", "(", new OneOperator1s_<S, S>(FileMakeDirectory));
+  Global.Add("FileRename", "(", new OneOperator2s_<S, S, S>(FileRename));
+  Global.Add("FileRemoveMatching", "(", new OneOperator2s_<S, S, S>(FileRemoveMatching));
+  Global.Add("FileKind", "(", new OneOperator1_<long, S>(FileKind));
+  Global.Add("FileEndsWith", "(", new OneOperator2_<long, S, S>(FileEndsWith));
+  Global.Add("ResultsClaim", "(", new OneOperator2s_<S, S, S>(ResultsClaim));
+  Global.Add("StreamWriteError", "(", new OneOperator1s_<S, std::ostream*>(StreamWriteError));
+  Global.Add("JsonFileError", "(", new OneOperator1s_<S, S>(JsonFileError));
+  Global.Add("JsonQuote", "(", new OneOperator1s_<S, S>(JsonQuote));
+  Global.Add("ShellQuote", "(", new OneOperator1s_<S, S>(ShellQuote));
 }
 
 LOADFUNC(Load_Init)
