@@ -89,11 +89,11 @@ class Validator {
       std::string ignored;
       return string(ignored);
     }
-    if (c == '-' || (c >= '0' && c <= '9')) return number();
-    if (literal("true") || literal("false") || literal("null")) return true;
     const std::string t = token();
     if (t == "inf" || t == "-inf" || t == "nan" || t == "-nan" || t == "Infinity" || t == "-Infinity" || t == "NaN")
       return fail("the value is not a finite number (" + t + ")");
+    if (c == '-' || (c >= '0' && c <= '9')) return number();
+    if (literal("true") || literal("false") || literal("null")) return true;
     return fail("not a JSON value: '" + t + "'");
   }
   bool object(int depth) {
