@@ -15,8 +15,6 @@ SCENES := $(sort $(basename $(notdir $(wildcard edp/scenes/*.edp))))
 VARIANTS := $(sort $(basename $(notdir $(wildcard edp/variants/*.edp))))
 SCENE ?= sleeve-circular
 ARGS ?=
-# -help among ARGS: the script lists its options and stops (edp/lib/errors.idp); nothing to draw.
-HELP := $(filter -help,$(ARGS))
 PYTHON := /usr/bin/python3
 FF := tools/ff
 
@@ -109,14 +107,17 @@ check-scene:
 IS_VARIANT = $(filter $(SCENE),$(VARIANTS))
 RUN_SCRIPT = $(if $(IS_VARIANT),edp/variants,edp/scenes)/$(SCENE).edp
 RUN_RESULTS = $(if $(IS_VARIANT),results/variants,results)/$(SCENE)
+# The figures of the scene: its own tools/plot_<scene>.py, else the sleeve's or the variants' (the
+# output folder is appended).
+RUN_PLOT = $(if $(wildcard tools/plot_$(SCENE).py),$(PYTHON) tools/plot_$(SCENE).py,$(if \
+           $(filter sleeve-%,$(SCENE)),$(PYTHON) tools/plot_sleeve.py,$(if $(IS_VARIANT),$(PYTHON) \
+           tools/plot_variants.py --only $(SCENE) results/variants)))
+# ARGS reaches tools/run_scene.py through the environment, never pasted into the recipe: a `;` or
+# a `$(...)` in it is a character, not a command (docs/errors.md). run_scene.py draws the figures
+# from the folder the run wrote (a -out among ARGS included).
+run: export RUN_ARGS := $(value ARGS)
 run: check-scene plugin meshes
-	$(FF) $(RUN_SCRIPT) $(ARGS)
-ifeq ($(HELP),)
-	@if [ -f tools/plot_$(SCENE).py ]; then $(PYTHON) tools/plot_$(SCENE).py $(RUN_RESULTS); \
-	 elif [[ "$(SCENE)" == sleeve-* ]]; then $(PYTHON) tools/plot_sleeve.py $(RUN_RESULTS); \
-	 elif [ -n "$(IS_VARIANT)" ]; then $(PYTHON) tools/plot_variants.py --only $(SCENE) results/variants $(RUN_RESULTS); fi
-	@echo "results in $(RUN_RESULTS)/"
-endif
+	@$(PYTHON) tools/run_scene.py $(RUN_SCRIPT) $(RUN_RESULTS) $(RUN_PLOT)
 
 # A checkout copied or moved elsewhere keeps a build/CMakeCache.txt naming the old folder, which
 # cmake refuses: such a build/ is another checkout's and is rebuilt from scratch.
@@ -139,14 +140,15 @@ bench: plugin meshes $(BENCH_MESHES)
 NP ?= 2
 SEEDS ?= 8
 OUT ?= results/sleeve-random-ensemble
+# NP, SEEDS, OUT and ARGS reach tools/run_scene.py through the environment (see run).
+ensemble: export RUN_ARGS := $(value ARGS)
+ensemble: export RUN_FIXED := -v 0 -seeds $(value SEEDS) -out $(value OUT)
+ensemble: export RUN_LAUNCHER := ff-mpirun -np $(value NP)
 ensemble: plugin meshes
 	@OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_mpi_yield_when_idle=1 \
 	  FF_INCLUDEPATH="$(CURDIR)/edp/lib;$(CURDIR)/edp/model;$(CURDIR)/edp/solvers;$(CURDIR)/edp/problems;/usr/include/freefem++/idp;./" \
-	  ff-mpirun -np $(NP) edp/ensemble/sleeve-random-ensemble.edp -v 0 -seeds $(SEEDS) -out $(OUT) $(ARGS)
-ifeq ($(HELP),)
-	@$(PYTHON) tools/plot_ensemble.py $(OUT)
-	@echo "results in $(OUT)/"
-endif
+	  $(PYTHON) tools/run_scene.py edp/ensemble/sleeve-random-ensemble.edp results/sleeve-random-ensemble \
+	  $(PYTHON) tools/plot_ensemble.py
 
 figures: test
 	@for scene in $(FIGURE_SCENES); do \

@@ -39,9 +39,11 @@
 //   string FileRename(string from, string to)      rename, replacing `to`
 //   string FileRemoveMatching(string dir, string patterns)   entries of dir matching the patterns
 //   int FileKind(string path)                      0 none, 1 file, 2 directory, 3 other
+//   string FileAbsolute(string path)               path made absolute (for messages)
 //   int FileEndsWith(string path, string tail)     1 if the file ends with tail (+ white space)
 //   string ResultsClaim(string dir, string scene)  refuse a foreign folder, lock it for this run
 //                                                  (the lock goes when the process exits)
+//   int ResultsRelease(string dir)                 removes this process's lock of dir now
 //   string StreamWriteError(ofstream f)            flushes f; "" if every write so far succeeded
 //   string JsonFileError(string path)              "" if the file is valid JSON, finite numbers
 //   string JsonQuote(string s), string ShellQuote(string s)
@@ -264,6 +266,7 @@ string* FileRemoveMatching(Stack stack, string* const& dir, string* const& patte
   return NewString(stack, sma::files::remove_matching(*dir, *patterns));
 }
 long FileKind(string* const& path) { return sma::files::kind(*path); }
+string* FileAbsolute(Stack stack, string* const& path) { return NewString(stack, sma::files::absolute(*path)); }
 long FileEndsWith(string* const& path, string* const& tail) { return sma::files::ends_with(*path, *tail); }
 
 // The folders this process locked: their locks are removed at exit, however the script ends
@@ -283,6 +286,11 @@ string* ResultsClaim(Stack stack, string* const& dir, string* const& scene) {
     ClaimedFolders().push_back(*dir);
   }
   return NewString(stack, error);
+}
+
+long ResultsRelease(string* const& dir) {
+  sma::files::release_results(*dir, (long)getpid());
+  return 0;
 }
 
 // FreeFEM never checks its ofstreams: a full disk leaves a short file and no message. Flushing
@@ -329,8 +337,10 @@ static void Load_Init() {
   Global.Add("FileRename", "(", new OneOperator2s_<S, S, S>(FileRename));
   Global.Add("FileRemoveMatching", "(", new OneOperator2s_<S, S, S>(FileRemoveMatching));
   Global.Add("FileKind", "(", new OneOperator1_<long, S>(FileKind));
+  Global.Add("FileAbsolute", "(", new OneOperator1s_<S, S>(FileAbsolute));
   Global.Add("FileEndsWith", "(", new OneOperator2_<long, S, S>(FileEndsWith));
   Global.Add("ResultsClaim", "(", new OneOperator2s_<S, S, S>(ResultsClaim));
+  Global.Add("ResultsRelease", "(", new OneOperator1_<long, S>(ResultsRelease));
   Global.Add("StreamWriteError", "(", new OneOperator1s_<S, std::ostream*>(StreamWriteError));
   Global.Add("JsonFileError", "(", new OneOperator1s_<S, S>(JsonFileError));
   Global.Add("JsonQuote", "(", new OneOperator1s_<S, S>(JsonQuote));

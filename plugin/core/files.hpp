@@ -47,6 +47,13 @@ inline std::string rename_file(const std::string& from, const std::string& to) {
   return {};
 }
 
+// `path` made absolute against the current directory (for messages: where a file was looked for).
+inline std::string absolute(const std::string& path) {
+  std::error_code ec;
+  const auto full = fs::absolute(path, ec);
+  return ec ? path : full.lexically_normal().string();
+}
+
 // 0: nothing there, 1: a regular file (or a link to one), 2: a directory, 3: something else.
 inline int kind(const std::string& path) {
   std::error_code ec;
