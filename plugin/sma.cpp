@@ -47,6 +47,8 @@
 //   string StreamWriteError(ofstream f)            flushes f; "" if every write so far succeeded
 //   string JsonFileError(string path)              "" if the file is valid JSON, finite numbers
 //   string JsonQuote(string s), string ShellQuote(string s)
+//   string MeshFileError(string path, real minQuality)   "" if gmshload may read the MSH file
+//       (plugin/core/mesh_check.hpp: format, cut off, clockwise, area < 1e-8, quality)
 
 #include <ff++.hpp>
 #include <AFunction_ext.hpp>
@@ -65,6 +67,7 @@
 #include "core/files.hpp"
 #include "core/json.hpp"
 #include "core/material.hpp"
+#include "core/mesh_check.hpp"
 #include "core/obstacle.hpp"
 #include "core/psor.hpp"
 #include "core/psor_full.hpp"
@@ -311,6 +314,9 @@ string* JsonFileError(Stack stack, string* const& path) {
   const std::string error = sma::json::validate(text.str());
   return NewString(stack, error.empty() ? "" : *path + " is not valid JSON: " + error);
 }
+string* MeshFileError(Stack stack, string* const& path, double const& min_quality) {
+  return NewString(stack, sma::mesh::check_msh(*path, min_quality));
+}
 string* JsonQuote(Stack stack, string* const& text) { return NewString(stack, sma::json::quote(*text)); }
 string* ShellQuote(Stack stack, string* const& text) { return NewString(stack, sma::files::shell_quote(*text)); }
 
@@ -344,6 +350,7 @@ static void Load_Init() {
   Global.Add("StreamWriteError", "(", new OneOperator1s_<S, std::ostream*>(StreamWriteError));
   Global.Add("JsonFileError", "(", new OneOperator1s_<S, S>(JsonFileError));
   Global.Add("JsonQuote", "(", new OneOperator1s_<S, S>(JsonQuote));
+  Global.Add("MeshFileError", "(", new OneOperator2s_<S, S, double>(MeshFileError));
   Global.Add("ShellQuote", "(", new OneOperator1s_<S, S>(ShellQuote));
 }
 

@@ -4,12 +4,14 @@
 Reads the table of docs/errors.md (so that the document and the test cannot drift), runs each
 row's command from the repository root with $R = the root and $T = a fresh scratch directory, and
 asserts for each: the exit code of the table; one line starting with "error:" in its output
-(stderr for tools/ff and make, stdout for FreeFEM's cerr), matching the row's pattern; the run over in under 20 s (it must stop before the time loop); no
-summary.json in $T/out (nothing that looks like a finished run). Also asserts that the table
-covers every kind of bad input the project promises to catch, and that the backquoted command in
-a SCENE value never ran. The plugin cases use copies under $T through SMA_PLUGIN (tools/ff):
-a copy of the real plugin dated 2000 (stale), a plugin built here that reports version 2, a
-missing path; the real plugin/build/sma.so is never touched.
+(stderr for tools/ff and make, stdout for FreeFEM's cerr), matching the row's pattern; the run
+over in under 20 s (it must stop before the time loop); and that what a finished earlier run left
+in $T/out (its marker and a summary.json) is still there byte for byte: every check comes before
+anything is deleted. Also asserts that the table covers every kind of bad input the project
+promises to catch, and that the commands in a SCENE or ARGS value never ran. The plugin cases use copies under $T through SMA_PLUGIN (tools/ff):
+a copy of the real plugin dated 2000 (stale), a plugin built here that reports version 2, the
+real one cut short (corrupt), a missing path; the real plugin/build/sma.so is never touched. The
+broken meshes are made here from meshes/sleeve-aniso.msh (and gmsh, for MSH 4.1).
 Writes results/checks/bad_inputs.json.
 """
 import os
@@ -22,13 +24,16 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from checklib import ROOT, check, finish, record  # noqa: E402
+from checklib import ROOT, check, finish, record, sleeve_geometry  # noqa: E402
 
 # What the table must cover (a word of the "bad input" column for each).
 REQUIRED = ["unknown option", "T0 >= Tc", "omega", "mu < 0", "g < 0", "-gcontact", "-steps 0",
             "negative step count", "missing mesh file", "mesh without the expected boundary labels",
             "plugin not built", "plugin out of date", "another version", "unknown scene",
-            "shell metacharacters", "option without its value", "not a number", "integer option"]
+            "shell metacharacters", "option without its value", "not a number", "integer option",
+            "MSH 4", "cut off", "clockwise", "labels swapped", "another directory", "corrupt plugin",
+            "no such script", "overflows a double", "theta", "in Celsius", "user's own files",
+            "shell syntax in ARGS", "offset beyond the interference", "exact ring differs"]
 
 FAKE_PLUGIN = """// A stand-in SMA plugin that reports version 2 (tests/bad_inputs_test.py).
 #include "ff++.hpp"
@@ -76,6 +81,45 @@ def prepare(tmp):
     os.makedirs(os.path.join(tmp, "pref"))
     with open(os.path.join(tmp, "pref", "freefem++.pref"), "w") as f:
         f.write('loadpath += "./"\n')
+    os.makedirs(os.path.join(tmp, "corrupt"))
+    with open(os.path.join(ROOT, "plugin", "build", "sma.so"), "rb") as f:
+        head = f.read(50000)
+    with open(os.path.join(tmp, "corrupt", "sma.so"), "wb") as f:
+        f.write(head)
+    broken_meshes(os.path.join(tmp, "meshes"))
+
+
+def broken_meshes(folder):
+    """v4.msh, cut.msh, clockwise.msh, swapped.msh: meshes/sleeve-aniso.msh broken four ways."""
+    os.makedirs(folder)
+    source = os.path.join(ROOT, "meshes", "sleeve-aniso.msh")
+    text = open(source).read()
+    with open(os.path.join(folder, "cut.msh"), "w") as f:
+        f.write(text[:20000])
+    geometry = sleeve_geometry()
+    gmsh = subprocess.run(["gmsh", "-2", "-format", "msh41", os.path.join(ROOT, "meshes", "ring.geo"),
+                           "-setnumber", "Ri", str(geometry["Ri"]), "-setnumber", "Hr", str(geometry["Hr"]),
+                           "-setnumber", "nr", "6", "-o", os.path.join(folder, "v4.msh")],
+                          capture_output=True, text=True)
+    check(gmsh.returncode == 0, f"gmsh wrote an MSH 4.1 ring (exit {gmsh.returncode})")
+    clockwise, swapped, section, turned = [], [], False, False
+    for line in text.splitlines(keepends=True):
+        words = line.split()
+        section = (section or line.startswith("$Elements")) and not line.startswith("$EndElements")
+        if section and len(words) > 5 and words[1] == "2" and not turned:  # the first triangle
+            clockwise.append(" ".join(words[:-2] + [words[-1], words[-2]]) + "\n")
+            turned = True
+        else:
+            clockwise.append(line)
+        if section and len(words) > 5 and words[1] == "1" and words[3] in ("1", "2"):  # an edge
+            words[3] = {"1": "2", "2": "1"}[words[3]]
+            swapped.append(" ".join(words) + "\n")
+        else:
+            swapped.append(line)
+    with open(os.path.join(folder, "clockwise.msh"), "w") as f:
+        f.write("".join(clockwise))
+    with open(os.path.join(folder, "swapped.msh"), "w") as f:
+        f.write("".join(swapped))
 
 
 def main():
@@ -92,23 +136,31 @@ def main():
         prepare(tmp)
         env.update(T=tmp, R=ROOT)
         for row in rows:
+            # What a finished earlier run leaves: every check must come before it is deleted.
             out = os.path.join(tmp, "out")
             shutil.rmtree(out, ignore_errors=True)
+            os.makedirs(out)
+            earlier = '{"scene": "an earlier run"}\n'
+            for name, text in ((".sma-results", "sleeve-circular\n"), ("summary.json", earlier)):
+                with open(os.path.join(out, name), "w") as f:
+                    f.write(text)
             t0 = time.time()
             run = subprocess.run(["bash", "-c", row["command"]], cwd=ROOT, env=env, capture_output=True,
                                  text=True, timeout=120)
             seconds = time.time() - t0
             errors = [ln for ln in (run.stderr + run.stdout).splitlines() if ln.startswith("error:")]
             matched = bool(errors) and re.search(row["pattern"], errors[0]) is not None
-            check(run.returncode == row["exit"] and len(errors) == 1 and matched and seconds < 20
-                  and not os.path.exists(os.path.join(out, "summary.json")),
+            summary = os.path.join(out, "summary.json")
+            kept = os.path.exists(summary) and open(summary).read() == earlier
+            check(run.returncode == row["exit"] and len(errors) == 1 and matched and seconds < 20 and kept,
                   f"{row['input']}: exit {run.returncode} (table {row['exit']}), {len(errors)} error line, "
-                  f"{'matches' if matched else 'does not match'} the pattern, {seconds:.2f} s: "
+                  f"{'matches' if matched else 'does not match'} the pattern, {seconds:.2f} s, the earlier "
+                  f"summary.json {'kept' if kept else 'DELETED or changed'}: "
                   f"{errors[0] if errors else run.stderr.strip()[-300:]}")
             measured.append({"input": row["input"], "exit": run.returncode, "seconds": round(seconds, 3),
                              "message": errors[0] if errors else None, "matched": matched})
         check(not os.path.exists(os.path.join(tmp, "injected")),
-              "the command in backquotes in SCENE never ran ($T/injected absent)")
+              "the commands in SCENE and ARGS never ran ($T/injected absent)")
     check(os.path.exists(os.path.join(ROOT, "plugin", "build", "sma.so")), "the real plugin is still there")
     record("bad_inputs", {"test": "bad_inputs", "rows": len(rows), "runs": measured,
                           "slowest_seconds": max(m["seconds"] for m in measured)})
