@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fnmatch.h>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <sys/types.h>
@@ -99,8 +100,16 @@ inline std::string remove_matching(const std::string& dir, const std::string& pa
   return {};
 }
 
-// Whether the process `pid` is alive on this machine (a lock of a dead process is stale).
-inline bool process_alive(long pid) { return pid > 0 && (kill((pid_t)pid, 0) == 0 || errno == EPERM); }
+// Whether the process `pid` is alive on this machine (a lock of a dead process is stale). A killed
+// process whose parent died too stays a zombie until someone reaps it (in a container, maybe
+// never): kill(pid, 0) still succeeds, so /proc's state Z counts as dead.
+inline bool process_alive(long pid) {
+  if (pid <= 0 || !(kill((pid_t)pid, 0) == 0 || errno == EPERM)) return false;
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string text((std::istreambuf_iterator<char>(stat)), std::istreambuf_iterator<char>());
+  const auto close = text.rfind(')');  // the command name, in parentheses, may hold spaces
+  return close == std::string::npos || close + 2 >= text.size() || text[close + 2] != 'Z';
+}
 
 // The process id written in a lock file, or 0.
 inline long lock_owner(const fs::path& lock) {

@@ -1,0 +1,216 @@
+#!/usr/bin/python3
+"""Faults while writing results: nothing silent, nothing lost, nothing mixed (edp/lib/output.idp,
+plugin/core/files.hpp).
+
+1. A full disk. A small tmpfs is mounted as the output folder where the machine allows it (root),
+   at several sizes; and, everywhere, the process's file-size limit (RLIMIT_FSIZE, SIGXFSZ
+   ignored: writes beyond it fail with EFBIG) at several sizes. Each run either ends with exit 0
+   and complete files (summary.json valid JSON, history.csv with every step, every VTU closed),
+   or with exit 1, one "error: cannot write <file>" line and no summary.json. At least one size
+   must fail (or the test proves nothing) and the largest must pass.
+2. Two runs into one folder: the second, started while the first holds the folder, fails naming
+   the first's process; the first completes undisturbed, and its lock is gone after.
+3. A killed run (SIGKILL, no exit handler) leaves its lock; the next run takes it (the process is
+   dead) and completes.
+4. A folder of the user's (a frames/ folder and notes) given as -out: refused, nothing in it touched.
+5. Names with shell syntax: -out and -mesh with a quote, double quotes, spaces, a semicolon,
+   $(...), backquotes and UTF-8 run normally; summary.json is valid JSON and holds the mesh path
+   exactly; no command in them ran.
+Writes results/checks/faults.json.
+"""
+import json
+import os
+import resource
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+from checklib import ROOT, check, finish, record  # noqa: E402
+
+FF = os.path.join(ROOT, "tools", "ff")
+SCENE = os.path.join(ROOT, "edp", "scenes", "sleeve-circular.edp")
+# A short run that still writes every kind of file: 300 steps, frames every 50, three instants.
+SHORT = ["-mesh", "meshes/sleeve-coarse.msh", "-steps", "300", "-vtkevery", "50", "-quiet", "1"]
+
+
+def run(out, *extra, limit=None, wait=True):
+    def preexec():
+        if limit is not None:
+            signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+            resource.setrlimit(resource.RLIMIT_FSIZE, (limit, limit))
+    command = [FF, SCENE] + SHORT + ["-out", out] + list(extra)
+    if not wait:
+        return subprocess.Popen(command, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                text=True, start_new_session=True)
+    return subprocess.run(command, cwd=ROOT, capture_output=True, text=True, preexec_fn=preexec, timeout=300)
+
+
+def errors_of(result):
+    return [ln for ln in (result.stdout + result.stderr).splitlines() if ln.startswith("error:")]
+
+
+def complete(out, steps=300):
+    """Why the folder is not a complete run's, or "" when it is."""
+    try:
+        summary = json.load(open(os.path.join(out, "summary.json")))
+    except (OSError, ValueError) as e:
+        return f"summary.json: {e}"
+    if summary.get("n_steps") != steps:
+        return f"summary.json n_steps {summary.get('n_steps')}"
+    lines = open(os.path.join(out, "history.csv")).read().splitlines()
+    if len(lines) != steps + 1:
+        return f"history.csv has {len(lines)} lines"
+    vtus = [os.path.join(d, f) for d, _, fs in os.walk(out) for f in fs if f.endswith(".vtu")]
+    for vtu in vtus:
+        if not open(vtu).read().rstrip().endswith("</VTKFile>"):
+            return f"{vtu} is not closed"
+    partial = [f for _, _, fs in os.walk(out) for f in fs if ".partial" in f]
+    return f"left {partial}" if partial else ""
+
+
+def judge(label, result, out):
+    """One run under a full disk: complete, or a clean failure."""
+    errors = errors_of(result)
+    if result.returncode == 0:
+        why = complete(out)
+        check(why == "", f"{label}: exit 0 and every file complete{': ' + why if why else ''}")
+        return "complete"
+    clean = (result.returncode == 1 and len(errors) == 1 and errors[0].startswith("error: cannot write ")
+             and not os.path.exists(os.path.join(out, "summary.json")))
+    check(clean, f"{label}: exit {result.returncode}, one 'error: cannot write' line, no summary.json "
+          f"({errors[:2] or result.stdout[-300:]})")
+    return errors[0] if errors else f"exit {result.returncode}"
+
+
+def full_disk(tmp, measured):
+    outcomes = []
+    # The file-size limit: the largest file of the short run is a VTU of about 60 kB.
+    for limit in (2000, 20000, 50000, 10 ** 7):
+        out = os.path.join(tmp, f"fsize-{limit}")
+        outcome = judge(f"file size limit {limit} B", run(out, limit=limit), out)
+        outcomes.append({"fault": "RLIMIT_FSIZE", "bytes": limit, "outcome": outcome})
+    # A small file system, where one can be mounted.
+    mount = os.path.join(tmp, "tmpfs")
+    os.makedirs(mount)
+    mounted = False
+    if os.geteuid() == 0:
+        for size in ("64k", "256k", "600k", "8m"):
+            if subprocess.run(["mount", "-t", "tmpfs", "-o", f"size={size}", "tmpfs", mount],
+                              capture_output=True).returncode != 0:
+                break
+            mounted = True
+            try:
+                out = os.path.join(mount, "out")
+                outcome = judge(f"a {size} file system", run(out), out)
+                outcomes.append({"fault": "tmpfs", "size": size, "outcome": outcome})
+            finally:
+                subprocess.run(["umount", mount], check=True)
+    measured["full_disk"] = outcomes
+    measured["tmpfs_mounted"] = mounted
+    failed = [o for o in outcomes if o["outcome"] != "complete"]
+    check(failed and outcomes[-1]["outcome"] == "complete",
+          f"full disk: {len(failed)} of {len(outcomes)} runs failed cleanly, the largest completed "
+          f"(tmpfs {'mounted' if mounted else 'not available: RLIMIT_FSIZE only'})")
+
+
+def wait_for(path, seconds=60):
+    end = time.time() + seconds
+    while time.time() < end and not os.path.exists(path):
+        time.sleep(0.02)
+    return os.path.exists(path)
+
+
+def concurrent(tmp, measured):
+    out = os.path.join(tmp, "shared")
+    first = subprocess.Popen([FF, SCENE, "-quiet", "1", "-out", out], cwd=ROOT, stdout=subprocess.PIPE,
+                             stderr=subprocess.STDOUT, text=True)  # 1500 steps: a few seconds
+    locked = wait_for(os.path.join(out, ".sma-lock"))
+    second = run(out)
+    first_output, _ = first.communicate(timeout=300)
+    errors = errors_of(second)
+    owner_named = bool(errors) and f"in use by another run (process " in errors[0]
+    check(locked and second.returncode == 1 and len(errors) == 1 and owner_named,
+          f"a second run into a folder in use fails naming the first's process: {errors[:1]}")
+    why = complete(out, steps=1500)
+    check(first.returncode == 0 and why == "" and not os.path.exists(os.path.join(out, ".sma-lock")),
+          f"the first run completed undisturbed and released the folder (exit {first.returncode}{', ' + why if why else ''})")
+    measured["concurrent"] = {"second_error": errors[0] if errors else None, "first_exit": first.returncode}
+
+
+def killed(tmp, measured):
+    out = os.path.join(tmp, "killed")
+    victim = subprocess.Popen([FF, SCENE, "-quiet", "1", "-out", out], cwd=ROOT, stdout=subprocess.DEVNULL,
+                              stderr=subprocess.DEVNULL, start_new_session=True)
+    locked = wait_for(os.path.join(out, ".sma-lock"))
+    os.killpg(victim.pid, signal.SIGKILL)
+    victim.wait()
+    stale = os.path.exists(os.path.join(out, ".sma-lock"))
+    again = run(out)
+    why = complete(out)
+    check(locked and stale and again.returncode == 0 and why == "",
+          f"a killed run's lock stays (stale: {stale}) and the next run takes it and completes "
+          f"(exit {again.returncode}{', ' + why if why else ''})")
+    measured["killed"] = {"stale_lock_left": stale, "next_exit": again.returncode}
+
+
+def foreign(tmp, measured):
+    out = os.path.join(tmp, "my papers")
+    os.makedirs(os.path.join(out, "frames"))
+    mine = {os.path.join(out, "frames", "step-000050.vtu"): "my own frame\n",
+            os.path.join(out, "notes.txt"): "do not lose\n"}
+    for path, text in mine.items():
+        with open(path, "w") as f:
+            f.write(text)
+    result = run(out)
+    errors = errors_of(result)
+    untouched = all(open(p).read() == t for p, t in mine.items())
+    left = sorted(os.listdir(out))
+    check(result.returncode == 1 and len(errors) == 1 and "holds files this suite did not write" in errors[0]
+          and untouched and left == ["frames", "notes.txt"],
+          f"a folder of the user's is refused and left as it was ({left}): {errors[:1]}")
+    measured["foreign"] = {"error": errors[0] if errors else None, "left": left}
+
+
+def shell_syntax(tmp, measured):
+    name = "it's a \"dir\"; touch PWNED $(touch PWNED) `touch PWNED` r\u00e9sultats \u2713"
+    folder = os.path.join(tmp, name)
+    os.makedirs(folder)
+    mesh = os.path.join(folder, "ring; touch PWNED 'q'.msh")
+    shutil.copyfile(os.path.join(ROOT, "meshes", "sleeve-coarse.msh"), mesh)
+    out = os.path.join(folder, "out $(touch PWNED)")
+    result = subprocess.run([FF, SCENE, "-mesh", mesh, "-steps", "300", "-quiet", "1", "-out", out],
+                            cwd=ROOT, capture_output=True, text=True, timeout=300)
+    # A PWNED made by a shell would land in the working directory (ROOT) or next to the files.
+    injected = [p for p in (os.path.join(tmp, "PWNED"), os.path.join(ROOT, "PWNED"), os.path.join(folder, "PWNED"))
+                if os.path.exists(p)]
+    try:
+        summary = json.load(open(os.path.join(out, "summary.json")))
+        mesh_recorded = summary["parameters"]["mesh"]
+    except (OSError, ValueError, KeyError) as e:
+        mesh_recorded = f"unreadable: {e}"
+    check(result.returncode == 0 and mesh_recorded == mesh and not injected,
+          f"paths with quotes, spaces, ;, $(...), backquotes and UTF-8 are names: exit {result.returncode}, "
+          f"summary.json records the mesh path exactly ({mesh_recorded == mesh}), nothing ran ({injected})"
+          + ("" if result.returncode == 0 else f": {errors_of(result)[:1] or result.stdout[-300:]}"))
+    measured["shell_syntax"] = {"exit": result.returncode, "mesh_recorded_exactly": mesh_recorded == mesh}
+
+
+def main():
+    measured = {}
+    with tempfile.TemporaryDirectory(prefix="faults-") as tmp:
+        full_disk(tmp, measured)
+        concurrent(tmp, measured)
+        killed(tmp, measured)
+        foreign(tmp, measured)
+        shell_syntax(tmp, measured)
+    record("faults", {"test": "faults", **measured})
+    finish()
+
+
+if __name__ == "__main__":
+    main()
