@@ -1,6 +1,6 @@
-// Quarter of the SMA ring (paper §4.2, Fig. 11): inner radius Ri, thickness Hr, triangles of
-// size lc. Boundary labels (physical lines): 1 inner surface (contact with the pipe),
-// 2 outer surface, 3 cut on the x axis (y = 0), 4 cut on the y axis (x = 0); the half ring
+// Quarter of the SMA ring (paper Fig. 11, docs/model.md#ring-and-pipe): inner radius Ri, thickness
+// Hr, triangles of size lc. Boundary labels (physical lines): 1 inner surface (contact with the
+// pipe), 2 outer surface, 3 cut on the x axis (y = 0), 4 cut on the y axis (x = 0); the half ring
 // (half = 1) has labels 1, 2 and 3 only.
 // Usage: gmsh -2 -format msh22 -setnumber lc 0.001 ring.geo -o ring-coarse.msh
 //        gmsh -2 -format msh22 -setnumber nr 16 ring.geo -o ring-l3.msh   (structured)
@@ -10,7 +10,7 @@ If (!Exists(Hr)) Hr = 0.01;  EndIf
 If (!Exists(lc)) lc = 0.002; EndIf
 Ro = Ri + Hr;
 
-// Half ring (-setnumber half 1), for problems with one mirror symmetry only (paper §4.3, Fig. 21):
+// Half ring (-setnumber half 1), for problems with one mirror symmetry only (paper Fig. 21):
 // the upper half, both ends on the x axis; label 3 is then the whole cut y = 0.
 If (!Exists(half)) half = 0; EndIf
 

@@ -18,7 +18,7 @@
 //   real AuchmutyLocal(real[] trace, real[] alpha, real[] c, real[] s, real[] weight)
 //       sum_i w_i (phi2*(s_i) - trace_i s_i), the sigma2 part of L_II [45].
 //   long PhaseCoefficients(real[] T, real[] law = [rho, a, L, T0, Tc], real[] alpha, real[] c)
-//       alpha(T) and c(T) (Pa) at every point (SPEC section 1).
+//       alpha(T) and c(T) (Pa) at every point (docs/model.md#temperature-dependence).
 //   long ObstacleGap(real[] x, real[] y, real[] pipe = [cx, cy, A, B], real[] gap, real[] nx, real[] ny)
 //       signed gap and outward pipe normal of reference points (circle when A == B).
 //   long PsorCondensed(real[int,int] W, real[] q, real[] g, real[] [omega, tol, maxit, polish],

@@ -76,7 +76,8 @@ def r_squared(xs, ys):
 
 
 def four_phases(label, T, p, austenite, first_contact):
-    """Checks the four phases of a sleeve's force-temperature curve (SPEC section 6) at one point:
+    """Checks the four phases of a sleeve's force-temperature curve
+    (docs/model.md#fig-11-14-sleeve-circular) at one point:
     (1) zero force before contact (at least 3 steps); (2) contact while the ring is all
     martensite, the force linear in T (R^2 > 0.99 over at least 5 steps); (3) jumps while it
     turns back to austenite (largest one-step rise at least 3 x the mean rise per step of phase
@@ -86,7 +87,8 @@ def four_phases(label, T, p, austenite, first_contact):
     Returns the figures measured."""
     reversion = next(i for i, f in enumerate(austenite) if f > 0)
     # All austenite for good: phase points near T* may flip back and forth for a few steps
-    # (SPEC section 4, hazard 2: on/off phases with Crank-Nicolson latent heat): the jerks.
+    # (docs/model.md#two-hazards, hazard 2: on/off phases with Crank-Nicolson latent heat): the
+    # jerks.
     all_austenite = max(i for i, f in enumerate(austenite) if f < 1) + 1
     flips = sum(1 for a, b in zip(austenite[reversion:all_austenite], austenite[reversion + 1:all_austenite + 1])
                 if b < a)

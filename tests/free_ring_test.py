@@ -5,8 +5,8 @@ Runs edp/scenes/free-ring.edp with the paper's latent heat and with none, and ch
   * the discrete energy balance: per step and cumulated, stored heat = heat through the boundary
     + latent heat released, to 1e-6 relative (recomputed here from history.csv); over the whole
     cycle (austenite -> martensite -> austenite) the net latent heat is zero;
-  * the phases where SPEC section 1 puts them: austenite as long as the ring is above T0 on
-    cooling, the whole ring martensite 1 (the free dilatation) at the end of the cold hold,
+  * the phases where docs/model.md#thresholds puts them: austenite as long as the ring is above
+    T0 on cooling, the whole ring martensite 1 (the free dilatation) at the end of the cold hold,
     austenite again at the end; the ring is back to austenite by T* + 1 K, T* = 212.75 K being
     where alpha^2 = c (lambda + mu) for a stress-free martensite (plane strain);
   * the latent heat shows in T: the ring is warmer than without latent heat while it transforms on

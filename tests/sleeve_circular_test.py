@@ -1,8 +1,9 @@
 #!/usr/bin/python3
-"""Verification of the sleeve-circular scene (paper §4.2.1, Fig. 12) on the coarse mesh.
+"""Verification of the sleeve-circular scene (paper Fig. 12,
+docs/model.md#fig-11-14-sleeve-circular) on the coarse mesh.
 
 Asserts, on the force-temperature curve at the inner-surface point on the x axis, the four phases
-of SPEC section 6 in order (checklib.four_phases: zero; linear in T with R^2 > 0.99; jumps;
+of the paper's Fig. 12 in order (checklib.four_phases: zero; linear in T with R^2 > 0.99; jumps;
 constant), the final pressure uniform along the surface within 1 %, every contact node's force
 >= 0. Writes results/checks/sleeve_circular_phases.json.
 """

@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Verification of the elliptic sleeves (paper §4.4.1-4.4.2, Fig. 25-32) on the default mesh.
+"""Verification of the elliptic sleeves (paper Fig. 25-32, docs/model.md#fig-25-28-sleeve-elliptic)
+on the default mesh.
 
 sleeve-elliptic (mu = 0), against the paper's account:
   - contact starts on the major (vertical) axis: at the first contact step the y-axis point

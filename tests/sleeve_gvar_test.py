@@ -1,7 +1,8 @@
 #!/usr/bin/python3
-"""Verification of sleeve-circular-gvar (paper §4.2.2, Fig. 17-20) against sleeve-circular, both
-on meshes/sleeve-quarter.msh with 1500 steps and the paper's on/off phases (-phasemodel onoff):
-these are claims of the paper's scheme. With the default fraction model both curves are smooth
+"""Verification of sleeve-circular-gvar (paper Fig. 17-20,
+docs/model.md#fig-17-20-sleeve-circular-gvar) against sleeve-circular, both on
+meshes/sleeve-quarter.msh with 1500 steps and the paper's on/off phases (-phasemodel onoff): these
+are claims of the paper's scheme. With the default fraction model both curves are smooth
 (largest one-step rise 0.27 MPa with constant g, 0.48 MPa with variable g; docs/parameters.md).
 
 Paper: the phase change is progressive and starts at the ring-pipe interface; the force rises

@@ -1,13 +1,14 @@
 #!/usr/bin/python3
-"""Verification of sleeve-offset (paper §4.3, Fig. 21-24) on the coarse half ring, 600 steps.
+"""Verification of sleeve-offset (paper Fig. 21-24, docs/model.md#fig-21-24-sleeve-offset) on the
+coarse half ring, 600 steps.
 
 - The symmetry reduction: the half ring with a centred pipe gives the quarter ring's final
   pressure (within 1e-6) and does not move along x (|u_x(A)| < 1e-12 m).
 - The offset ring (5.5 um): it recentres on the pipe (point A moves by the offset within 5 %);
-  the top and far points go through the four phases of SPEC section 6 (checklib.four_phases); the
-  near point, which touches first, carries before the others touch only the spring's share
-  (below 1 % of its final force); the final force is the centred ring's level (within 0.1 %)
-  and uniform (within 1 %). Paper: uniform, same level, same four phases.
+  the top and far points go through the four phases of the paper's Fig. 12 (checklib.four_phases);
+  the near point, which touches first, carries before the others touch only the spring's share
+  (below 1 % of its final force); the final force is the centred ring's level (within 0.1 %) and
+  uniform (within 1 %). Paper: uniform, same level, same four phases.
 - Reported, not asserted: with point A truly fixed (-anchor 1e3) the ring cannot recentre and
   the final force varies around the ring (the paper's "A fixed" read literally).
 Writes results/checks/sleeve_offset.json.

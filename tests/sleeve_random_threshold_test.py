@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Verification of sleeve-random-threshold (paper §4.4.3, Fig. 33-36) on the coarse mesh.
+"""Verification of sleeve-random-threshold (paper Fig. 33-36,
+docs/model.md#fig-33-36-sleeve-random-threshold) on the coarse mesh.
 
 - Reproducible draws: two runs with the same seed write byte-identical CSV files (history,
   points, final contact, fields at the three instants); a run with another seed writes different

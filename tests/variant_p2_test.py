@@ -11,7 +11,7 @@ Runs the variant on the three beam meshes into build/test-results/variant-p2 and
     convergence); the martensite area fractions of P1 and P2 on the fine mesh agree within 0.02
     (the zone stability the beam test asks across meshes);
   * Auchmuty's L_II never increases along the DC iterations, P1 and P2, every mesh (the invariant
-    of tests/beam_test.py), and the P2 DC counts stay of the order of ten (<= 20, paper §3.2).
+    of tests/beam_test.py), and the P2 DC counts stay of the order of ten (<= 20, paper Fig. 10).
 Writes results/checks/variant_p2.json.
 """
 import json

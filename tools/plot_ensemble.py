@@ -62,7 +62,7 @@ def main():
     for key, style in (("q05", ":"), ("q50", "--"), ("q95", ":")):
         right.axvline(stats[key], color="k", linestyle=style, linewidth=1)
     right.set_xlabel("node pressure peak / final (quantiles 5, 50, 95 % dashed)")
-    right.set_title("local peaks (paper §4.4.3: about 1.5)")
+    right.set_title("local peaks (paper Fig. 33-36: about 1.5)")
     right.legend(fontsize=8)
 
     fig.suptitle(f"sleeve-random-threshold, {n} seeds on {summary['n_ranks']} rank(s): spread "

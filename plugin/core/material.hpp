@@ -1,4 +1,5 @@
-// Frémond's law coefficients as stresses (Pa) from the temperature (paper [4], SPEC §1):
+// Frémond's law coefficients as stresses (Pa) from the temperature (paper [4],
+// docs/model.md#temperature-dependence):
 //   alpha(T) = rho a (Tc - T) for T <= Tc, 0 above   (the paper's -a(T - T0) is a misprint)
 //   c(T)     = rho L / T0 (T - T0)
 // rho turns the paper's per-mass energies (J/kg) into J/m^3 = Pa.

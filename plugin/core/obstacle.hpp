@@ -1,5 +1,5 @@
-// Rigid pipes (paper §4.2-4.4): the gap and the normal of a body point in the reference
-// configuration (small displacements, SPEC §3).
+// Rigid pipes (docs/model.md#ring-and-pipe): the gap and the normal of a body point in the
+// reference configuration (small displacements, docs/model.md#signorini).
 //
 // The body (the ring) lies outside the pipe. For a point p, `gap` is the signed distance from the
 // pipe's surface (positive outside, negative when p starts inside the pipe, i.e. for an

@@ -1,4 +1,5 @@
-// Pointwise phase projection of Frémond's shape-memory-alloy law (paper §3.1, cases i-v).
+// Pointwise phase projection of Frémond's shape-memory-alloy law (paper cases i-v,
+// docs/model.md#thresholds).
 //
 // At a quadrature point with in-plane strain trace t, the local step of the DC algorithm picks
 // sigma2 = s I in the subdifferential of phi2(e) = max(alpha |tr e| - c, 0)  [9].

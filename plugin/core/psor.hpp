@@ -1,6 +1,6 @@
 // Projected SOR (projected Gauss-Seidel with over-relaxation) on a condensed contact problem:
-// the paper's Signorini + Tresca sweeps (§3.3, [58]-[60]), in the Delassus form of LMGC90's
-// nonsmooth Gauss-Seidel.
+// the paper's Signorini + Tresca sweeps ([58]-[60], docs/model.md#projected-sor), in the Delassus
+// form of LMGC90's nonsmooth Gauss-Seidel.
 //
 // Unknowns: per contact node i, a normal reaction r_n >= 0 (the obstacle pushes) and a tangential
 // reaction r_t, stored interleaved r = (r_n0, r_t0, r_n1, r_t1, ...). With the Delassus operator

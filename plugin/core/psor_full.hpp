@@ -1,4 +1,5 @@
-// Projected SOR on the full stiffness system (the paper's own method, §3.3, [58]-[60]):
+// Projected SOR on the full stiffness system (the paper's own method, [58]-[60],
+// docs/model.md#projected-sor):
 // Gauss-Seidel with over-relaxation over every degree of freedom of K u = b, where the two dofs of
 // each contact node are swept together in the node's (n, t) frame and projected:
 //   normal:      u_n <- max(-gap, u_n - omega res_n / K_nn)             (Signorini: n.u + gap >= 0)

@@ -1,4 +1,5 @@
-// Unit tests of the temperature dependence of the law (SPEC §1, §5 data).
+// Unit tests of the temperature dependence of the law (docs/model.md#temperature-dependence;
+// the paper's data: docs/model.md#data).
 #include <gtest/gtest.h>
 
 #include <vector>
@@ -6,7 +7,7 @@
 #include "core/material.hpp"
 
 namespace {
-const sma::ThermalLaw kNiTi{7900, 300, 3000, 210, 280};  // the paper's §4.1 data
+const sma::ThermalLaw kNiTi{7900, 300, 3000, 210, 280};  // the paper's data (docs/model.md#data)
 }
 
 TEST(Material, AlphaIsPositiveBelowTcZeroAboveAndContinuous) {
@@ -25,7 +26,8 @@ TEST(Material, CChangesSignAtT0) {
 
 TEST(Material, ReverseTransformationOfAFreeRingNear212K) {
   // A stress-free martensite point has tr e = alpha/(lambda+mu) (plane strain); it turns back to
-  // austenite when alpha tr e = c, i.e. alpha^2 = c (lambda + mu): SPEC §5 says near 212-213 K.
+  // austenite when alpha tr e = c, i.e. alpha^2 = c (lambda + mu): T* = 212.75 K
+  // (docs/model.md#thresholds).
   const double E = 85e9, nu = 0.3, bulk = E / (2 * (1 + nu) * (1 - 2 * nu));
   double lo = 210, hi = 280;
   for (int i = 0; i < 100; ++i) {

@@ -1,4 +1,4 @@
-// Unit tests of the pointwise phase projection (SPEC §1, paper §3.1 cases i-v).
+// Unit tests of the pointwise phase projection (the paper's cases i-v, docs/model.md#thresholds).
 #include <gtest/gtest.h>
 
 #include <cmath>
