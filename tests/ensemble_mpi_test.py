@@ -166,6 +166,7 @@ def main():
     out = os.path.join(TEST_RESULTS, "ensemble-failure")
     shutil.rmtree(out, ignore_errors=True)
     os.makedirs(out)
+    open(os.path.join(out, ".sma-results"), "w").close()  # an earlier ensemble's folder
     open(os.path.join(out, "seed-2"), "w").close()
     _, proc = ensemble("ensemble-failure", 2, fresh=False)
     blamed = [s for s in seeds if f"seed {s} (rank" in proc.stderr]

@@ -250,11 +250,11 @@ def random_threshold(reference):
     # The paper's on/off model, with its old iteration limit (the loud failure's count is asserted).
     args = base + ["-phasemodel", "onoff", "-fpmaxit", "30"]
     code, err = run_failing("sleeve-random-threshold", "hard-random-20", *args)
-    m = re.search(r"error: DCT fixed point \(heat <-> phases\) did not converge: (\d+) iterations, relative "
-                  r"change of T (\S+) > tol ([0-9.eE+-]+)", err)
-    check(code != 0 and m is not None and int(m.group(1)) == 30 and float(m.group(2)) > float(m.group(3))
-          and "-fprelax 1" in err,
-          f"without -fprelax: fails loudly, naming -fprelax 1 (exit {code}): "
+    m = re.search(r"error: time step (\d+): DCT fixed point \(heat <-> phases\) did not converge: (\d+) "
+                  r"iterations, relative change of T (\S+) > tol ([0-9.eE+-]+)", err)
+    check(code != 0 and m is not None and 1 <= int(m.group(1)) <= 300 and int(m.group(2)) == 30
+          and float(m.group(3)) > float(m.group(4)) and "-fprelax 1" in err,
+          f"without -fprelax: fails loudly, naming its time step and -fprelax 1 (exit {code}): "
           + (m.group(0) if m else "no 'DCT fixed point ... did not converge' message"))
     result = {"fraction_model": {k: frac[k] for k in ("reversal_steps", "pressure_zigzag_steps",
                                                       "fixed_point_iterations_max", "final_pressure_mean")},
