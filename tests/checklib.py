@@ -36,7 +36,8 @@ def record(name, data):
     os.makedirs(os.path.join(ROOT, "results", "checks"), exist_ok=True)
     path = os.path.join(ROOT, "results", "checks", name + ".json")
     with open(path + ".partial", "w") as f:
-        json.dump(dict(data, passed=not failures), f, indent=2)
+        # allow_nan=False: a NaN or an infinity fails here, loudly, instead of writing invalid JSON.
+        json.dump(dict(data, passed=not failures), f, indent=2, allow_nan=False)
     os.replace(path + ".partial", path)
 
 

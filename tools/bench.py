@@ -425,7 +425,7 @@ def main():
 
     results["bench_wall_seconds"] = time.perf_counter() - bench_start
     with open(os.path.join(OUT, "summary.json.partial"), "w") as f:
-        json.dump(results, f, indent=2)
+        json.dump(results, f, indent=2, allow_nan=False)  # a NaN fails here, not in a reader
     os.replace(os.path.join(OUT, "summary.json.partial"), os.path.join(OUT, "summary.json"))
     write_doc(results, plt)
     print(f"bench: done in {results['bench_wall_seconds']:.0f} s: results/bench/summary.json, docs/benchmarks.md")
