@@ -4,6 +4,8 @@
 #                                                        (ARGS=-help: list the scene's options only)
 #   make test                                            install, build, pass every test (ctest)
 #   make figures                                         every paper figure beside ours: docs/figures.md
+#   make sweep SCENE=<scene> PARAM=g VALUES='250 500 1000' [ARGS=...] [JOBS=2] [OUT=dir]
+#                                                        one option swept: table and overlay figures
 #   make bench                                           speed against error: docs/benchmarks.md
 #   make ensemble [NP=2] [SEEDS=8] [OUT=dir] [ARGS=...]  Monte Carlo over seeds of sleeve-random-threshold on MPI
 #   make docs                                            regenerate docs/parameter-reference.md (scenes' -help)
@@ -62,7 +64,7 @@ sleeve_opt_aniso36 := $(SLEEVE_RING) -setnumber nr 36 -setnumber nt 18
 sliver_opt_thin := $(SLEEVE_RING) -setnumber eps 1.3e-5
 sliver_opt_degenerate := $(SLEEVE_RING) -setnumber eps 1e-8
 
-.PHONY: run test figures bench ensemble docs deps plugin meshes clean check-scene
+.PHONY: run test figures bench ensemble docs deps plugin meshes clean check-scene sweep
 # The scenes behind the paper's figures (docs/figures.md), run at their defaults by make figures.
 FIGURE_SCENES := beam sleeve-circular sleeve-circular-single sleeve-circular-gvar sleeve-offset \
                  sleeve-elliptic sleeve-elliptic-friction sleeve-random-threshold
@@ -129,6 +131,22 @@ test: plugin meshes
 	  { mkdir -p build; cmake -S . -B build -DCMAKE_BUILD_TYPE=Release; }
 	@cmake --build build -j2
 	@cd build && ctest --output-on-failure -j2
+
+# A parameter sweep (tools/sweep.py): each value of PARAM run in parallel (JOBS, at most the cores),
+# then results/sweeps/<scene>-<param>/table.csv and overlay figures. Every make variable reaches
+# the shell through the environment, expanded as words but never parsed as commands (set -f: no
+# file-name globbing either).
+SWEEP_OUT_DEFAULT = results/sweeps/$(SCENE)-$(PARAM)
+sweep: export SWEEP_SCENE := $(value SCENE)
+sweep: export SWEEP_PARAM := $(value PARAM)
+sweep: export SWEEP_VALUES := $(value VALUES)
+sweep: export SWEEP_ARGS := $(value ARGS)
+sweep: export SWEEP_JOBS := $(or $(value JOBS),2)
+sweep: export SWEEP_DIR := $(or $(value OUT),$(SWEEP_OUT_DEFAULT))
+sweep: check-scene plugin meshes
+	@set -f; if [ -z "$$SWEEP_PARAM" ] || [ -z "$$SWEEP_VALUES" ]; then \
+	  echo "error: make sweep needs PARAM=<option without its dash> and VALUES='<v1> <v2> ...'" >&2; exit 2; fi; \
+	  $(PYTHON) tools/sweep.py "$$SWEEP_SCENE" "$$SWEEP_PARAM" $$SWEEP_VALUES --jobs "$$SWEEP_JOBS" --out "$$SWEEP_DIR"
 
 # Speed against error, all measured in one run: docs/benchmarks.md, results/bench/summary.json.
 bench: plugin meshes $(BENCH_MESHES)
