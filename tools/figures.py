@@ -159,7 +159,7 @@ def main():
                 f"{c['largest_rise_Pa']['gvar'] / 1e6:.2f} MPa per step against "
                 f"{c['largest_rise_Pa']['constant'] / 1e6:.2f}; below -35 C lower by up to "
                 f"{c['largest_deficit_below_minus35C_Pa'] / 1e6:.2f} MPa and never higher; final level at "
-                f"{c['t_all_austenite_s']['gvar']:.1f} s (inner {c['T_inner_all_austenite_C']['gvar']:.1f} C) "
+                f"{c['t_all_austenite_s']['gvar']:.1f} s (inner {c['T_inner_all_austenite_K']['gvar'] - KELVIN_AT_0C:.1f} C) "
                 f"instead of {c['t_all_austenite_s']['constant']:.1f} s; final {mpa(s['final_pressure_mean'])}, "
                 f"the same as constant g.", ""]
 
