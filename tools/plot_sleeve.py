@@ -335,6 +335,18 @@ def gap_axis(ax, top):
     ax.set_ylim(-0.04 * high, high)
 
 
+def obstacle_is_summarys(outdir, summary):
+    """True when the pipe of summary.json (an ellipse, pipe_A x pipe_B, centred at offset) is the
+    obstacle the run used: at the last state every node in contact (contact-final.csv) has a gap
+    within TOUCHING by that ellipse. A variant with its own obstacle (ObstacleAt, e.g.
+    edp/variants/sleeve-superellipse.edp) fails it: its gap along the surface is not drawn."""
+    final = read_csv(os.path.join(outdir, "contact-final.csv"))
+    nodes = inner_surface(outdir, summary, "fields-3-end.vtu")
+    touching = {round(math.degrees(math.atan2(y, x)), 9)
+                for x, y, n in zip(final["x"], final["y"], final["normal_force"]) if n > 0}
+    return all(abs(n[3]) <= TOUCHING for n in nodes if round(n[0], 9) in touching)
+
+
 def displacement(outdir, summary):
     """displacement.png: u_r and the gap to the pipe along the inner surface at the instants, and
     the gap at the three points against time (points.csv)."""
@@ -345,6 +357,7 @@ def displacement(outdir, summary):
     half = par.get("ring") == "half"
     fig, (left, middle, right) = plt.subplots(1, 3, figsize=(17, 5.6))
     hidden, middle_top = [], 0.0
+    ellipse = obstacle_is_summarys(outdir, summary)
     for t, vtu, name in states:
         nodes = inner_surface(outdir, summary, vtu)
         angle = [n[0] for n in nodes]
@@ -357,15 +370,22 @@ def displacement(outdir, summary):
             hidden.append(name or f"t = {t:g} s")
             continue
         line, = left.plot(angle, [n[1] * 1e6 for n in nodes], "-o", ms=2, lw=1, label=label)
-        middle.plot(angle, [n[3] * 1e6 for n in nodes], "-o", ms=2, lw=1, color=line.get_color(), label=label)
-        middle_top = max(middle_top, max(n[3] for n in nodes))
-    left.plot(angle, [n[2] * 1e6 for n in nodes], "k--", lw=1, label="pipe surface: the u_r that touches it")
+        if ellipse:
+            middle.plot(angle, [n[3] * 1e6 for n in nodes], "-o", ms=2, lw=1, color=line.get_color(), label=label)
+            middle_top = max(middle_top, max(n[3] for n in nodes))
+    if ellipse:
+        left.plot(angle, [n[2] * 1e6 for n in nodes], "k--", lw=1, label="pipe surface: the u_r that touches it")
+    else:
+        middle.text(0.5, 0.5, "the run's obstacle is not summary.json's ellipse\n(a variant's ObstacleAt):\n"
+                    "the gap along the surface is not drawn; points.csv's gap (right) is the run's own",
+                    ha="center", va="center", transform=middle.transAxes, fontsize=8)
     middle.axhline(0, color="k", lw=0.8)
     gap_axis(middle, middle_top)
     for ax in (left, middle):
         ax.set_xlabel("angle of the inner-surface node (deg)")
         ax.grid(alpha=0.3)
-        ax.legend(fontsize=7)
+        if ax.get_legend_handles_labels()[0]:
+            ax.legend(fontsize=7)
     left.set_ylabel("radial displacement u_r (um)")
     left.set_title("radial displacement about the ring's centre" +
                    (f" ({', '.join(hidden)}: the initial state u = 0, not shown)" if hidden else ""), fontsize=9)
@@ -406,6 +426,8 @@ def displacement(outdir, summary):
     pipe = (f"circular pipe, radius {par['pipe_A'] * 1e3:.4g} mm" if par["pipe_A"] == par["pipe_B"] else
             f"elliptic pipe, semi-axes {par['pipe_A'] * 1e3:.5g} (x) and {par['pipe_B'] * 1e3:.5g} (y) mm")
     extra = f"; pipe centre at x = {par['offset'] * 1e6:.3g} um" if par.get("offset", 0) else ""
+    if not ellipse:
+        pipe, extra = "the variant's own obstacle", ""
     fig.suptitle(f"{summary['scene']}: the inner surface (ring inner radius {par['ring_inner_radius'] * 1e3:.5g} mm, "
                  f"{pipe}{extra})", fontsize=10)
     fig.tight_layout()
