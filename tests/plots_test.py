@@ -36,7 +36,7 @@ from vtk.util.numpy_support import vtk_to_numpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from checklib import ROOT, TEST_RESULTS, check, finish, record, rows, run_scene, sleeve_outputs  # noqa: E402
+from checklib import ROOT, TEST_RESULTS, check, finish, record, run_scene, sleeve_outputs  # noqa: E402
 
 STEPS, EVERY = 300, 10
 POINTS = {"x_axis": 0.0, "diagonal": 45.0, "y_axis": 90.0}
@@ -99,7 +99,8 @@ def main():
     dt = summary["parameters"]["dt"]
 
     # ---- Units in the headers ----
-    expected = ["step", "t"] + [f"{q}_{n}_{u}" for n in POINTS for q, u in (("T", "K"), ("pressure", "Pa"), ("gap", "m"))]
+    units = (("T", "K"), ("pressure", "Pa"), ("gap", "m"))
+    expected = ["step", "t"] + [f"{q}_{n}_{u}" for n in POINTS for q, u in units]
     check(list(points[0]) == expected, f"points.csv columns carry their units: {','.join(points[0])}")
     firsts = {}
     for instant in ("1-dilated", "2-contact", "3-end"):
