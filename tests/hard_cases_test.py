@@ -219,14 +219,14 @@ def large_steps(fine, E, nu):
         entry = {"dt_s": dt, "final_pressure_Pa": s["final_pressure_mean"], "lame_error": err,
                  "final_fraction_austenite": austenite, "diff_from_1500_steps": diff,
                  "first_contact_step": first, "first_contact_time_s": first * dt,
-                 "T_inner_first_contact_C": s["T_inner_first_contact"] - KELVIN_AT_0C,
+                 "T_inner_first_contact_K": s["T_inner_first_contact"],
                  "reversion_step": reversion, "austenite_step": s["austenite_step"],
-                 "T_inner_austenite_C": s["T_inner_austenite"] - KELVIN_AT_0C,
+                 "T_inner_austenite_K": s["T_inner_austenite"],
                  "linear_phase_steps": reversion - first, "peak_pressure_Pa": s["peak_pressure_mean"],
                  "iterations": iteration_stats(hist)}
-        print(f"info {n} steps: contact at {first * dt:.1f} s ({entry['T_inner_first_contact_C']:.2f} C inner), "
+        print(f"info {n} steps: contact at {first * dt:.1f} s ({entry['T_inner_first_contact_K'] - KELVIN_AT_0C:.2f} C inner), "
               f"{entry['linear_phase_steps']} steps of linear phase, austenite for good at "
-              f"{s['austenite_step'] * dt:.1f} s ({entry['T_inner_austenite_C']:.2f} C); per step at most "
+              f"{s['austenite_step'] * dt:.1f} s ({entry['T_inner_austenite_K'] - KELVIN_AT_0C:.2f} C); per step at most "
               f"{s['fixed_point_iterations_max']} fixed-point, {s['dc_iterations_max']} DC, "
               f"{s['psor_sweeps_max']:.0f} PSOR sweeps")
         result[n] = entry
@@ -275,7 +275,7 @@ def random_threshold(reference):
               f"{homogeneous / 1e6:.6f} MPa")
         result.update(cycles=len(notes), max_residual=worst, final_pressure_Pa=final,
                       bisections=[n[3] for n in notes], lambdas=[n[1] for n in notes],
-                      T_inner_austenite_C=run["summary"]["T_inner_austenite"] - KELVIN_AT_0C)
+                      T_inner_austenite_K=run["summary"]["T_inner_austenite"])
     onoff = [*COARSE, "-steps", "300", "-phasemodel", "onoff"]
     ref_out = run_scene("sleeve-circular", "hard-reference-300-onoff", *onoff)
     same_out = run_scene("sleeve-circular", "hard-relax-no-cycle", *onoff, "-fprelax", "1")

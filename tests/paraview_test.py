@@ -12,7 +12,7 @@ Runs sleeve-circular on meshes/sleeve-coarse.msh, 60 steps, a frame every 10 ste
     tributary lengths (contact-final.csv), equals history.csv's T_inner_mean at that step;
   - the last frame is fields-3-end.vtu at t = 150 s and agrees with fields-3-end.csv, written by
     a different writer: per triangle phase, sigma_rr, sigma_tt, T0_local, and the CSV's centroid
-    temperature = the mean of the triangle's three nodal temperatures in the VTU;
+    temperature and displacement (ux, uy) = the means of the triangle's three nodal values in the VTU;
   - the last frame's displacement closes the gap with the pipe at every inner node: u.n =
     pipe radius - node radius (Signorini, every node in contact at the end);
   - no *.partial file is left;
@@ -174,6 +174,11 @@ def main():
     temp = vtk_to_numpy(pd.GetArray("temperature"))
     worst["T_centroid"] = max(abs(sum(temp[k] for k in p) / 3 - float(r["T"])) for p, r in zip(tri_pts, csv)) \
         / max(float(r["T"]) for r in csv)
+    # The CSV's displacement is the P1 field at the centroid: the mean of the three nodes' (VTU).
+    disp = vtk_to_numpy(pd.GetArray("displacement"))
+    for c, key in enumerate(("ux", "uy")):
+        worst[f"{key}_centroid"] = max(abs(sum(disp[k][c] for k in p) / 3 - float(r[key])) for p, r in zip(tri_pts, csv)) \
+            / max(abs(float(r[key])) for r in csv)
     pts = vtk_to_numpy(g.GetPoints().GetData())
     worst_centroid = max(math.hypot(sum(pts[k][0] for k in p) / 3 - float(r["x"]),
                                     sum(pts[k][1] for k in p) / 3 - float(r["y"])) for p, r in zip(tri_pts, csv))

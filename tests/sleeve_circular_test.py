@@ -20,8 +20,8 @@ def main():
                     "-steps", "600", "-quiet", "1")
     run = sleeve_outputs(out)
     summary, hist, pts = run["summary"], run["history"], run["points"]
-    T = [float(r["T_x_axis_C"]) for r in pts]
-    p = [float(r["pressure_x_axis_GPa"]) * 1e9 for r in pts]
+    T = [float(r["T_x_axis_K"]) for r in pts]
+    p = [float(r["pressure_x_axis_Pa"]) for r in pts]
     austenite = [float(r["fraction_austenite"]) for r in hist]
     first_contact = next(i for i, r in enumerate(hist) if int(r["contact_nodes"]) > 0)
     phases = four_phases("x axis", T, p, austenite, first_contact)

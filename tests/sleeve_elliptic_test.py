@@ -30,7 +30,7 @@ from checklib import check, finish, record, run_scene, sleeve_outputs  # noqa: E
 
 
 def pressures(points, name):
-    return [float(r[f"pressure_{name}_GPa"]) * 1e9 for r in points]
+    return [float(r[f"pressure_{name}_Pa"]) for r in points]
 
 
 def main():

@@ -85,8 +85,8 @@ def main():
         "martensite_radius_m": {"constant": const["martensite_radius"], "gvar": gvar["martensite_radius"]},
         "largest_rise_Pa": jump, "largest_excess_below_minus35C_Pa": max(diffs),
         "largest_deficit_below_minus35C_Pa": -min(diffs),
-        "T_inner_all_austenite_C": {"constant": const["summary"]["T_inner_austenite"] - KELVIN_AT_0C,
-                                    "gvar": T_max_level},
+        "T_inner_all_austenite_K": {"constant": const["summary"]["T_inner_austenite"],
+                                    "gvar": s["T_inner_austenite"]},
         "t_all_austenite_s": {"constant": const["summary"]["austenite_step"] * const["summary"]["parameters"]["dt"],
                               "gvar": s["austenite_step"] * s["parameters"]["dt"]},
         "final_pressure_Pa": final})

@@ -49,8 +49,8 @@ def main():
           "a larger interference never touches later")
     record("sleeve_interference", {"test": "sleeve_interference", "mesh": "meshes/sleeve-coarse.msh",
                                    "steps": 600, "ring_inner_radius_m": RING_INNER,
-                                   "window_closes_um": min(closed) if closed else None,
-                                   "scan_um": {str(k): v for k, v in scan.items()}})
+                                   "window_closes_m": min(closed) * 1e-6 if closed else None,
+                                   "scan": [dict(interference_m=k * 1e-6, **v) for k, v in scan.items()]})
     finish()
 
 

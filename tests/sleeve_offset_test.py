@@ -42,10 +42,10 @@ def main():
     austenite = [float(r["fraction_austenite"]) for r in offset["history"]]
     figures = {}
     for name in ("top", "far"):
-        T = [float(r[f"T_{name}_C"]) for r in offset["points"]]
-        p = [float(r[f"pressure_{name}_GPa"]) * 1e9 for r in offset["points"]]
+        T = [float(r[f"T_{name}_K"]) for r in offset["points"]]
+        p = [float(r[f"pressure_{name}_Pa"]) for r in offset["points"]]
         figures[name] = four_phases(f"offset, {name}", T, p, austenite, next(i for i, v in enumerate(p) if v > 0))
-    near = [float(r["pressure_near_GPa"]) * 1e9 for r in offset["points"]]
+    near = [float(r["pressure_near_Pa"]) for r in offset["points"]]
     others = min(figures[n]["first_contact_step"] for n in figures) - 1
     early = max(near[:others])
     check(early < 0.01 * near[-1], f"near point before the others touch: at most {early / 1e3:.2f} kPa, "
@@ -55,11 +55,11 @@ def main():
     check(s["final_pressure_non_uniformity"] < 0.01,
           f"final force uniform: non-uniformity {100 * s['final_pressure_non_uniformity']:.2f} % < 1 %")
     f = fixed["summary"]
-    fp = {n: float(fixed["points"][-1][f"pressure_{n}_GPa"]) * 1e9 for n in ("near", "top", "far")}
+    fp = {n: float(fixed["points"][-1][f"pressure_{n}_Pa"]) for n in ("near", "top", "far")}
     print(f"info point A fixed (-anchor 1e3): non-uniformity {100 * f['final_pressure_non_uniformity']:.1f} %, "
           f"final near/top/far {fp['near'] / 1e6:.2f} / {fp['top'] / 1e6:.2f} / {fp['far'] / 1e6:.2f} MPa, "
           f"first contact of the far point at step "
-          f"{next(i for i, r in enumerate(fixed['points']) if float(r['pressure_far_GPa']) > 0) + 1}")
+          f"{next(i for i, r in enumerate(fixed['points']) if float(r['pressure_far_Pa']) > 0) + 1}")
     record("sleeve_offset", {
         "test": "sleeve_offset", "mesh": "meshes/sleeve-half-coarse.msh", "steps": 600,
         "quarter_final_pressure_Pa": q, "half_centred_final_pressure_Pa": c,

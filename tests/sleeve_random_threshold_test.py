@@ -68,7 +68,7 @@ def main():
         "sample_std_K": s["T0_local_std"], "sample_mean_K": s["T0_local_mean"],
         "identical_files_same_seed": same, "different_files_other_seed": differ,
         "node_peak_over_final": peaks,
-        "T_inner_austenite_C": {k: v["T_inner_austenite"] - KELVIN_AT_0C for k, v in summary.items()},
+        "T_inner_austenite_K": {k: v["T_inner_austenite"] for k, v in summary.items()},
         "final_pressure_Pa": {k: v["final_pressure_mean"] for k, v in summary.items()}})
     finish()
 

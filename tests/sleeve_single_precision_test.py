@@ -25,7 +25,7 @@ def spreads(points):
     """(max - min) / max of the three points' force, at every step where one of them touches."""
     result = []
     for r in points:
-        p = [float(r[f"pressure_{n}_GPa"]) for n in POINTS]
+        p = [float(r[f"pressure_{n}_Pa"]) for n in POINTS]
         if max(p) > 0:
             result.append(((max(p) - min(p)) / max(p), int(r["step"])))
     return result

@@ -125,8 +125,8 @@ def elliptic_liftoff(points_csv):
     """First contact at the axis that touches first; the lowest force there before the other axis
     touches (0: the paper's lift-off)."""
     points = read_csv(points_csv)
-    x = [v * 1e9 for v in points["pressure_x_axis_GPa"]]
-    y = [v * 1e9 for v in points["pressure_y_axis_GPa"]]
+    x = points["pressure_x_axis_Pa"]
+    y = points["pressure_y_axis_Pa"]
     fx = next(i for i, v in enumerate(x) if v > 0)
     fy = next(i for i, v in enumerate(y) if v > 0)
     first, other = (y, fx) if fy < fx else (x, fy)

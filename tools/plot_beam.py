@@ -41,6 +41,7 @@ def phase_map(outdir, mesh):
     ax.autoscale_view()
     ax.set_aspect("equal")
     ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
     ax.set_title(f"beam, {mesh['name']} mesh ({mesh['nodes']} nodes, {mesh['triangles']} triangles): "
                  f"austenite grey {mesh['fraction_austenite']:.3f}, martensite 1 black "
                  f"{mesh['fraction_m1']:.3f}, martensite 2 white {mesh['fraction_m2']:.3f}",

@@ -5,6 +5,7 @@ Usage: tools/plot_free-ring.py [results/free-ring] [other-run-dir label ...]
 Extra (directory, label) pairs overlay the mean temperature of other runs (e.g. -latent 0).
 """
 import csv
+import json
 import os
 import sys
 
@@ -12,6 +13,9 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from units import celsius  # noqa: E402
 
 
 def read(outdir):
@@ -24,21 +28,22 @@ def main():
     outdir = sys.argv[1] if len(sys.argv) > 1 else "results/free-ring"
     h = read(outdir)
     fig, (ax, bx) = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
-    ax.plot(h["t"], h["T_outside"], "k--", lw=0.8, label="outside")
-    ax.plot(h["t"], h["T_mean"], label="ring, mean")
-    ax.plot(h["t"], h["T_inner"], lw=0.8, label="inner surface point")
+    ax.plot(h["t"], [celsius(T) for T in h["T_outside"]], "k--", lw=0.8, label="outside")
+    ax.plot(h["t"], [celsius(T) for T in h["T_mean"]], label="ring, mean")
+    ax.plot(h["t"], [celsius(T) for T in h["T_inner"]], lw=0.8, label="inner surface point")
     extra = sys.argv[2:]
     for d, label in zip(extra[::2], extra[1::2]):
-        ax.plot(read(d)["t"], read(d)["T_mean"], ":", label=label)
-    ax.axhline(210, color="0.6", lw=0.6)
-    ax.set_ylabel("T (K)")
+        ax.plot(read(d)["t"], [celsius(T) for T in read(d)["T_mean"]], ":", label=label)
+    T0 = json.load(open(os.path.join(outdir, "summary.json")))["parameters"]["T0"]
+    ax.axhline(celsius(T0), color="0.6", lw=0.6, label=f"T0 = {celsius(T0):.2f} C")
+    ax.set_ylabel("T (C)")
     ax.legend(fontsize=8)
-    ax.set_title("free ring cooled and heated through T0 = 210 K")
+    ax.set_title(f"free ring cooled and heated through T0 = {celsius(T0):.2f} C ({T0:g} K)")
     bx.plot(h["t"], h["fraction_austenite"], label="austenite")
     bx.plot(h["t"], h["fraction_m1"], label="martensite 1")
     bx.plot(h["t"], h["fraction_m2"], label="martensite 2")
     bx.set_xlabel("t (s)")
-    bx.set_ylabel("area fraction")
+    bx.set_ylabel("area fraction (1)")
     bx.legend(fontsize=8)
     partial = os.path.join(outdir, "temperature.partial.png")
     fig.savefig(partial, dpi=120, bbox_inches="tight")

@@ -3,11 +3,13 @@
 results/sleeve-radial/:
 
   force-temperature.png  contact pressure (MPa) against the inner-surface temperature (C), the
-                         paper's Fig. 12; with further history.csv files given (a sleeve-circular
+                         paper's Fig. 12, and against time (s) zoomed on the transient, the four
+                         phases shaded; with further history.csv files given (a sleeve-circular
                          run, say), their curves on the same axes
   iterations.png         heat <-> phases fixed-point and DC iterations per step
-  fields.png             radial profiles of sigma_rr, sigma_tt, T and the phase at the three
-                         instants (end of dilatation, during contact, end)
+  fields.png             radial profiles of sigma_rr, sigma_tt (MPa), T (C) and the phase (the
+                         signed martensite fraction: M1 > 0, A, M2 < 0) at the three instants
+                         (end of dilatation, during contact, end)
 Usage: tools/plot_sleeve-radial.py results/sleeve-radial [other/history.csv ...]
 """
 import glob
@@ -21,27 +23,31 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_sleeve import read_csv, save  # noqa: E402
-from units import KELVIN_AT_0C  # noqa: E402
+from plot_sleeve import fields_time, force_panels, read_csv, save, state_values  # noqa: E402
+from units import celsius  # noqa: E402
 
 
 def force_temperature(outdir, summary, others):
-    fig, ax = plt.subplots(figsize=(7, 4.5))
-    curves = [(os.path.join(outdir, "history.csv"),
-               f"1D, nr {summary['nr']}, {summary['n_steps']} steps")]
-    curves += [(path, os.path.relpath(os.path.dirname(path))) for path in others]
-    for path, label in curves:
-        h = read_csv(path)
-        ax.plot([T - KELVIN_AT_0C for T in h["T_inner_mean"]], [p / 1e6 for p in h["pressure_mean"]],
-                lw=1, label=label)
-    ax.axhline(summary["lame_pressure"] / 1e6, color="k", ls=":", lw=0.8, label="Lame shrink fit")
-    ax.set_xlabel("inner-surface temperature (C)")
-    ax.set_ylabel("contact pressure (MPa)")
-    ax.set_title(f"{summary['scene']}: clamping pressure against temperature")
-    ax.legend(fontsize=8)
-    ax.grid(alpha=0.3)
+    """Left: pressure against the inner-surface temperature; right: against time, zoomed on the
+    transient; this run's four phases shaded (plot_sleeve.force_panels)."""
+    h = read_csv(os.path.join(outdir, "history.csv"))
+    curves = {f"1D, nr {summary['nr']}, {summary['n_steps']} steps": (h["T_inner_mean"], h["pressure_mean"], h["t"])}
+    for path in others:
+        o = read_csv(path)
+        curves[os.path.relpath(os.path.dirname(path))] = (o["T_inner_mean"], o["pressure_mean"], o["t"])
+    fig = plt.figure(figsize=(13, 4.8))
+    legend, left, right = force_panels(fig, curves, summary, h, [0.0] + h["t"],
+                                       state_values(summary, h, "T_inner_mean"), "inner-surface temperature (C)",
+                                       f"{summary['scene']}: clamping pressure against temperature and time")
+    for ax in (left, right):
+        ax.axhline(summary["lame_pressure"] / 1e6, color="k", ls=":", lw=0.8,
+                   label="Lame shrink fit" if ax is left else None)
+    handles, names = left.get_legend_handles_labels()
+    keep = [(hd, n) for hd, n in zip(handles, names) if n in legend or n == "Lame shrink fit"]
+    left.legend(*zip(*keep), fontsize=7, loc="lower right")
     fig.tight_layout()
     save(fig, os.path.join(outdir, "force-temperature.png"), 120)
+    print("force-temperature.png curves: " + " | ".join(legend))
 
 
 def iterations(outdir, summary):
@@ -66,18 +72,23 @@ def fields(outdir, summary):
         return
     fig, axes = plt.subplots(1, 3, figsize=(14, 4))
     for path in paths:
-        with open(path) as f:
-            when = f.readline().strip("# \n")
+        when = fields_time(path)
         d = read_csv(path)
         r_mm = [r * 1e3 for r in d["r"]]
         label = f"{os.path.basename(path)[len('fields-'):-len('.csv')]} ({when})"
         line, = axes[0].plot(r_mm, [v / 1e6 for v in d["sigma_rr"]], lw=1, label=label)
         axes[0].plot(r_mm, [v / 1e6 for v in d["sigma_tt"]], lw=1, ls="--", color=line.get_color())
-        axes[1].plot(r_mm, [T - KELVIN_AT_0C for T in d["T"]], lw=1, color=line.get_color())
+        axes[1].plot(r_mm, [celsius(T) for T in d["T"]], lw=1, color=line.get_color())
         axes[2].step(r_mm, d["phase"], where="mid", lw=1, color=line.get_color())
-    axes[0].set_title("sigma_rr (solid), sigma_tt (dashed), MPa", fontsize=9)
-    axes[1].set_title("temperature (C)", fontsize=9)
-    axes[2].set_title("phase (0 A, 1 M1, 2 M2)", fontsize=9)
+    axes[0].set_title("sigma_rr (solid), sigma_tt (dashed)", fontsize=9)
+    axes[0].set_ylabel("stress (MPa)")
+    axes[1].set_title("temperature", fontsize=9)
+    axes[1].set_ylabel("T (C)")
+    # The radial CSV's phase is the signed martensite fraction chi: +1 all M1, 0 A, -1 all M2.
+    axes[2].set_title("phase: signed martensite fraction", fontsize=9)
+    axes[2].set_ylabel("phase (1): M1 > 0, A = 0, M2 < 0")
+    axes[2].set_yticks([-1, -0.5, 0, 0.5, 1], ["M2", "-0.5", "A", "0.5", "M1"])
+    axes[2].set_ylim(-1.1, 1.1)
     for ax in axes:
         ax.set_xlabel("r (mm)")
         ax.grid(alpha=0.3)

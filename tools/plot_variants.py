@@ -43,7 +43,7 @@ def asymmetric(src, dst, mesh="medium"):
         ax.set_ylim(0, 0.01)
         ax.set_aspect("equal")
         r = runs[(law, mesh)]
-        ax.set_title(f"alpha+ = {r['alpha_plus'] / 1e9:.2f} GPa, alpha- = {r['alpha_minus'] / 1e9:.2f} GPa: "
+        ax.set_title(f"alpha+ = {r['alpha_plus'] / 1e6:.0f} MPa, alpha- = {r['alpha_minus'] / 1e6:.0f} MPa: "
                      f"M1 (black) {r['fraction_m1']:.3f}, M2 (white) {r['fraction_m2']:.3f}, "
                      f"tip {r['tip_deflection'] * 1e3:.2f} mm", fontsize=9)
         ax.set_yticks([])

@@ -1,5 +1,6 @@
 """Units: the one place of the Celsius offset on the Python side (edp/lib/units.idp is the
-scripts'). The result files are in kelvin except where a column's name ends in _C."""
+scripts'). Every data file (CSV, VTU, JSON) is in SI units, temperatures in kelvin; the pictures
+and the console in degrees C and MPa (docs/outputs.md)."""
 
 KELVIN_AT_0C = 273.15
 
