@@ -37,7 +37,8 @@ from units import celsius  # noqa: E402
 # Curves closer than this fraction of the axis span at every step are drawn as one legend entry:
 # 1 % of a 6-inch axis is about two line widths, too close to tell apart at reading size.
 COINCIDE_FRACTION = 0.01
-# The four phases of the force-temperature curve (SPEC section 6), with their shading colours.
+# The four phases of the force-temperature curve (docs/model.md#fig-11-14-sleeve-circular), with their
+# shading colours.
 PHASES = (("no contact", "0.88"), ("contact, martensite: linear in T", "#cfe2f3"),
           ("reversion to austenite", "#fce5cd"), ("austenite: constant", "#d9ead3"))
 # The three inner-surface points of edp/problems/sleeve/sleeve-2d.idp (pointName).
