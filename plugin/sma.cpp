@@ -41,6 +41,7 @@
 //   int FileKind(string path)                      0 none, 1 file, 2 directory, 3 other
 //   string FileAbsolute(string path)               path made absolute (for messages)
 //   int FileEndsWith(string path, string tail)     1 if the file ends with tail (+ white space)
+//   string FileTruncate(string path, real length)  cuts the file to its first length bytes
 //   string ResultsClaim(string dir, string scene)  refuse a foreign folder, lock it for this run
 //                                                  (the lock goes when the process exits)
 //   int ResultsRelease(string dir)                 removes this process's lock of dir now
@@ -54,6 +55,7 @@
 #include <AFunction_ext.hpp>
 
 #include <cerrno>
+#include <cmath>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
@@ -271,6 +273,9 @@ string* FileRemoveMatching(Stack stack, string* const& dir, string* const& patte
 long FileKind(string* const& path) { return sma::files::kind(*path); }
 string* FileAbsolute(Stack stack, string* const& path) { return NewString(stack, sma::files::absolute(*path)); }
 long FileEndsWith(string* const& path, string* const& tail) { return sma::files::ends_with(*path, *tail); }
+string* FileTruncate(Stack stack, string* const& path, double const& length) {
+  return NewString(stack, sma::files::truncate_file(*path, std::llround(length)));
+}
 
 // The folders this process locked: their locks are removed at exit, however the script ends
 // (normal end, Fail's exit(1), FreeFEM's own error exit). A killed process leaves a lock that the
@@ -345,6 +350,7 @@ static void Load_Init() {
   Global.Add("FileKind", "(", new OneOperator1_<long, S>(FileKind));
   Global.Add("FileAbsolute", "(", new OneOperator1s_<S, S>(FileAbsolute));
   Global.Add("FileEndsWith", "(", new OneOperator2_<long, S, S>(FileEndsWith));
+  Global.Add("FileTruncate", "(", new OneOperator2s_<S, S, double>(FileTruncate));
   Global.Add("ResultsClaim", "(", new OneOperator2s_<S, S, S>(ResultsClaim));
   Global.Add("ResultsRelease", "(", new OneOperator1_<long, S>(ResultsRelease));
   Global.Add("StreamWriteError", "(", new OneOperator1s_<S, std::ostream*>(StreamWriteError));

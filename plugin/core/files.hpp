@@ -191,6 +191,22 @@ inline bool ends_with(const std::string& path, const std::string& tail) {
   return end.size() >= tail.size() && end.compare(end.size() - tail.size(), tail.size(), tail) == 0;
 }
 
+// Cuts the file `path` to its first `length` bytes: a resumed run (edp/problems/sleeve/
+// checkpoint.idp) drops the rows written after its last checkpoint. A file shorter than `length`
+// is refused: the rows the checkpoint counts on are gone, it cannot be continued.
+inline std::string truncate_file(const std::string& path, long long length) {
+  if (length < 0) return "cannot cut " + path + " to " + std::to_string(length) + " bytes: a length is >= 0";
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) return "cannot cut " + path + ": no such file";
+  const auto size = fs::file_size(path, ec);
+  if (ec) return "cannot cut " + path + ": " + reason(ec);
+  if (size < (std::uintmax_t)length)
+    return "cannot cut " + path + " to " + std::to_string(length) + " bytes: it holds only " + std::to_string(size);
+  fs::resize_file(path, (std::uintmax_t)length, ec);
+  if (ec) return "cannot cut " + path + " to " + std::to_string(length) + " bytes: " + reason(ec);
+  return {};
+}
+
 // `text` quoted for a POSIX shell: one word whatever it holds ('it'\''s').
 inline std::string shell_quote(const std::string& text) {
   std::string out = "'";

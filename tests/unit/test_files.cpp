@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "core/files.hpp"
@@ -120,6 +121,22 @@ TEST(Files, EndsWithTellsACompleteVtuFromACutOne) {
   EXPECT_TRUE(files::ends_with(t / "whole.vtu", "</VTKFile>"));
   EXPECT_FALSE(files::ends_with(t / "cut.vtu", "</VTKFile>"));
   EXPECT_FALSE(files::ends_with(t / "missing.vtu", "</VTKFile>"));
+}
+
+TEST(Files, TruncateKeepsTheFirstBytesAndRefusesToGrow) {
+  Scratch t;
+  touch(t / "history.csv", "step\n1\n2\n3\n");
+  ASSERT_EQ(files::truncate_file(t / "history.csv", 7), "");
+  std::ifstream in(t / "history.csv");
+  const std::string kept((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(kept, "step\n1\n");
+  const std::string longer = files::truncate_file(t / "history.csv", 8);
+  EXPECT_NE(longer.find("holds only 7"), std::string::npos) << longer;
+  EXPECT_EQ(fs::file_size(t / "history.csv"), 7u);  // a refused cut leaves the file as it was
+  EXPECT_NE(files::truncate_file(t / "missing.csv", 0).find(t / "missing.csv"), std::string::npos);
+  EXPECT_NE(files::truncate_file(t / "history.csv", -1), "");
+  ASSERT_EQ(files::truncate_file(t / "history.csv", 0), "");
+  EXPECT_EQ(fs::file_size(t / "history.csv"), 0u);
 }
 
 TEST(Files, ShellQuoteMakesOneWordOfAnything) {

@@ -1,0 +1,123 @@
+#!/usr/bin/python3
+"""A sleeve run stopped half-way and resumed (-checkpoint N, -resume 1) equals the uninterrupted run.
+
+For sleeve-circular and sleeve-elliptic-friction (coarse mesh: the friction scene covers the
+contact warm start, the slip thresholds and the slip history) and sleeve-radial, 300 steps,
+a checkpoint every 50:
+  - A: the uninterrupted run with -checkpoint 50; its outputs equal, byte for byte, those of the
+    same run without -checkpoint (writing checkpoints changes nothing) and it leaves no
+    checkpoint.txt behind (a finished run has nothing to resume);
+  - B: the same run stopped after step 130 by -stopafter 130 (exit 4, as a crash: nothing
+    published, history.csv.partial holding the 30 rows past the checkpoint of step 100), with a
+    half-written checkpoint.txt.partial added as a kill during a checkpoint's write leaves it;
+    then resumed with -resume 1 (exit 0);
+  - every file of B (CSVs, fields, VTU frames, fields.pvd) equals A's byte for byte, and B's
+    summary.json equals A's but for the wall-clock time and its "resumed_from_step": 100.
+Why -stopafter rather than SIGKILL at a random time: these runs take about a second, so a kill
+after the checkpoint of step 100 and before the end would be a race; the state a kill leaves (a
+published checkpoint, CSVs longer than it records, a stray .partial) is made here exactly, and
+the resume reads nothing else. Writes results/checks/resume.json.
+"""
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+from checklib import ROOT, check, finish, record  # noqa: E402
+
+CASES = [("sleeve-circular", ["-mesh", "meshes/sleeve-coarse.msh"]),
+         ("sleeve-elliptic-friction", ["-mesh", "meshes/sleeve-coarse.msh"]),
+         ("sleeve-radial", [])]
+COMMON = ["-steps", "300", "-quiet", "1"]
+TIMING = ("wall_seconds", "resumed_from_step")
+
+
+def run(scene, out, *extra):
+    return subprocess.run([os.path.join(ROOT, "tools", "ff"), f"edp/scenes/{scene}.edp", *COMMON, *extra,
+                           "-out", out], cwd=ROOT, capture_output=True, text=True, timeout=300)
+
+
+def files(folder):
+    """Every file under folder, by its path relative to it."""
+    found = {}
+    for base, _, names in os.walk(folder):
+        for name in names:
+            path = os.path.join(base, name)
+            found[os.path.relpath(path, folder)] = path
+    return found
+
+
+def same_files(a, b, skip=("summary.json",)):
+    """Names of the files that differ or are in one folder only (summary.json compared apart)."""
+    fa, fb = files(a), files(b)
+    differ = sorted(set(fa) ^ set(fb))
+    for name in sorted(set(fa) & set(fb)):
+        if name in skip:
+            continue
+        with open(fa[name], "rb") as x, open(fb[name], "rb") as y:
+            if x.read() != y.read():
+                differ.append(name)
+    return differ, len(fa)
+
+
+def main():
+    measured = []
+    with tempfile.TemporaryDirectory(prefix="resume-") as tmp:
+        for scene, options in CASES:
+            plain, full, stopped = (os.path.join(tmp, f"{scene}-{k}") for k in ("plain", "A", "B"))
+            r0 = run(scene, plain, *options)
+            ra = run(scene, full, *options, "-checkpoint", "50")
+            check(r0.returncode == 0 and ra.returncode == 0,
+                  f"{scene}: the runs without and with -checkpoint 50 finish (exit {r0.returncode}, {ra.returncode})"
+                  + ("" if r0.returncode == ra.returncode == 0 else (r0.stdout + ra.stdout)[-400:]))
+            differ, count = same_files(plain, full, skip=())
+            differ = [d for d in differ if d != "summary.json"]
+            sa, s0 = (json.load(open(os.path.join(f, "summary.json"))) for f in (full, plain))
+            for s in (sa, s0):
+                s.pop("wall_seconds")
+            check(not differ and sa == s0 and not os.path.exists(os.path.join(full, "checkpoint.txt")),
+                  f"{scene}: writing checkpoints changes none of the {count} output files "
+                  f"(differ: {differ}; summary {'equal' if sa == s0 else 'DIFFERS'}) and the finished run "
+                  "leaves no checkpoint.txt")
+
+            rb = run(scene, stopped, *options, "-checkpoint", "50", "-stopafter", "130")
+            checkpoint = os.path.join(stopped, "checkpoint.txt")
+            text = open(checkpoint).read() if os.path.exists(checkpoint) else ""
+            rows = sum(1 for _ in open(os.path.join(stopped, "history.csv.partial"))) - 1 \
+                if os.path.exists(os.path.join(stopped, "history.csv.partial")) else -1
+            check(rb.returncode == 4 and "\nstep 100\n" in text and rows == 130
+                  and not os.path.exists(os.path.join(stopped, "summary.json")),
+                  f"{scene}: -stopafter 130 exits 4 (got {rb.returncode}) leaving the checkpoint of step 100 "
+                  f"({'found' if 'step 100' in text else 'MISSING'}), {rows} history rows (130: 30 to cut), "
+                  "no summary.json")
+            with open(os.path.join(stopped, "checkpoint.txt.partial"), "w") as f:
+                f.write("sma-sleeve-checkpoint 1\nscene half-writ")  # a kill during the next write
+            rr = run(scene, stopped, *options, "-checkpoint", "50", "-resume", "1")
+            check(rr.returncode == 0, f"{scene}: -resume 1 finishes (exit {rr.returncode})"
+                  + ("" if rr.returncode == 0 else " " + (rr.stdout + rr.stderr)[-400:]))
+            differ, count = same_files(full, stopped)
+            sb = json.load(open(os.path.join(stopped, "summary.json")))
+            resumed_from = sb.get("resumed_from_step")
+            sa = json.load(open(os.path.join(full, "summary.json")))
+            for s in (sa, sb):
+                for k in TIMING:
+                    s.pop(k, None)
+            check(not differ and sa == sb and resumed_from == 100,
+                  f"{scene}: the resumed run's {count} files equal the uninterrupted run's byte for byte "
+                  f"(differ: {differ}), its summary.json too but for the timing "
+                  f"({'equal' if sa == sb else 'DIFFERS'}), resumed_from_step {resumed_from} (100)")
+            measured.append({"scene": scene, "files": count, "differ": differ, "summary_equal": sa == sb,
+                             "resumed_from_step": resumed_from, "rows_at_stop": rows})
+            for folder in (plain, full, stopped):
+                shutil.rmtree(folder, ignore_errors=True)
+    record("resume", {"test": "resume", "steps": 300, "checkpoint_every": 50, "stopped_after": 130,
+                      "runs": measured})
+    finish()
+
+
+if __name__ == "__main__":
+    main()
