@@ -8,6 +8,7 @@ import sys
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 from units import KELVIN_AT_0C  # noqa: E402,F401  (re-exported for the tests)
+from fits import r_squared  # noqa: E402,F401  (re-exported for the tests)
 TEST_RESULTS = os.path.join(ROOT, "build", "test-results")
 failures = []
 
@@ -63,17 +64,6 @@ def sleeve_outputs(out):
             "points": rows(os.path.join(out, "points.csv")),
             "final": rows(os.path.join(out, "contact-final.csv"))}
 
-
-def r_squared(xs, ys):
-    """Coefficient of determination and slope of the least-squares line through (xs, ys)."""
-    n = len(xs)
-    mx, my = sum(xs) / n, sum(ys) / n
-    sxx = sum((x - mx) ** 2 for x in xs)
-    sxy = sum((x - mx) * (y - my) for x, y in zip(xs, ys))
-    slope = sxy / sxx
-    ss_res = sum((y - my - slope * (x - mx)) ** 2 for x, y in zip(xs, ys))
-    ss_tot = sum((y - my) ** 2 for y in ys)
-    return 1 - ss_res / ss_tot, slope
 
 
 def four_phases(label, T, p, austenite, first_contact):

@@ -43,6 +43,14 @@ POINTS = {"x_axis": 0.0, "diagonal": 45.0, "y_axis": 90.0}
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 
 
+
+def write_rows(path, table):
+    """Writes rows (dicts) as a CSV with their keys as the header."""
+    with open(path, "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(table[0]))
+        writer.writeheader()
+        writer.writerows(table)
+
 def read_vtu(path):
     reader = vtk.vtkXMLUnstructuredGridReader()
     reader.SetFileName(path)
@@ -163,10 +171,7 @@ def main():
         table = list(csv.DictReader(f))
     for r in table:
         r["pressure_diagonal_Pa"] = repr(1.05 * float(r["pressure_diagonal_Pa"]))
-    with open(os.path.join(fake, "points.csv"), "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=list(table[0]))
-        writer.writeheader()
-        writer.writerows(table)
+    write_rows(os.path.join(fake, "points.csv"), table)
     code, output = plot("plot_sleeve.py", fake)
     labels = legend_labels(output)
     check(code == 0 and len(labels) == 2 and "coincide" not in labels[1] and labels[1] == "45 deg"
@@ -174,10 +179,7 @@ def main():
           f"diagonal raised by 5 %: exit {code}, legend {labels} (x and y axes still one entry, 45 deg alone)")
     for r in table:
         r["pressure_y_axis_Pa"] = repr(1.1 * float(r["pressure_y_axis_Pa"]))
-    with open(os.path.join(fake, "points.csv"), "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=list(table[0]))
-        writer.writeheader()
-        writer.writerows(table)
+    write_rows(os.path.join(fake, "points.csv"), table)
     code, output = plot("plot_sleeve.py", fake)
     labels = legend_labels(output)
     check(code == 0 and len(labels) == 3 and not any("coincide" in label for label in labels),

@@ -14,6 +14,7 @@ import sys
 
 from plot_sleeve import coincident_groups, inner_surface, point_labels, read_csv, translation_along_x
 from units import KELVIN_AT_0C
+from fits import r_squared  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RESULTS = os.path.join(ROOT, "results")
@@ -89,17 +90,6 @@ def phase_radii(scene, instant="2-contact"):
     return {"austenite": sum(radius[True]) / max(1, len(radius[True])),
             "martensite": sum(radius[False]) / max(1, len(radius[False]))}
 
-
-def r_squared(xs, ys):
-    """Coefficient of determination and slope of the least-squares line through (xs, ys)."""
-    n = len(xs)
-    mx, my = sum(xs) / n, sum(ys) / n
-    sxx = sum((x - mx) ** 2 for x in xs)
-    sxy = sum((x - mx) * (y - my) for x, y in zip(xs, ys))
-    slope = sxy / sxx
-    ss_res = sum((y - my - slope * (x - mx)) ** 2 for x, y in zip(xs, ys))
-    ss_tot = sum((y - my) ** 2 for y in ys)
-    return 1 - ss_res / ss_tot, slope
 
 
 def curve_phases(run, summary, point):
