@@ -7,35 +7,47 @@
     r.summary["final_pressure_mean"], r.history["T_inner_mean"][-1]
 
 options(scene) lists a scene's options as the scene itself prints them (`-help tsv`, parsed by
-tools/param_reference.py); run() refuses an unknown name before starting FreeFEM, naming close
-matches; every run goes through tools/ff as an argument list, never through a shell. Standard
-library and numpy only.
+tools/param_reference.py, the one parser of that format); run() refuses an unknown name before
+starting FreeFEM, naming close matches; every run goes through tools/ff as an argument list, never
+through a shell, from the repository root (the scenes' mesh paths are relative to it: a relative
+`out` is relative to the root too). Standard library and numpy only.
 """
 import difflib
 import json
 import os
 import subprocess
+import sys
 
 import numpy as np
 
-import param_reference
+TOOLS = os.path.dirname(os.path.abspath(__file__))
+if TOOLS not in sys.path:  # importable from anywhere (tests/, a notebook), not only from tools/
+    sys.path.insert(0, TOOLS)
+import param_reference  # noqa: E402
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ROOT = os.path.dirname(TOOLS)
 FF = os.path.join(ROOT, "tools", "ff")
+SCENE_FOLDERS = ("edp/scenes", "edp/variants")
+LOG_LINES = 8  # the last lines of a failed run's log that an error quotes
 
 
 class SceneError(RuntimeError):
     """A scene that does not exist, an option it does not read, or a run that failed."""
 
 
+def scenes():
+    """Every scene and variant name, sorted."""
+    return sorted(os.path.splitext(f)[0] for folder in SCENE_FOLDERS
+                  for f in os.listdir(os.path.join(ROOT, folder)) if f.endswith(".edp"))
+
+
 def script(scene):
     """The path of a scene (edp/scenes) or variant (edp/variants), relative to the repository."""
-    for folder in ("edp/scenes", "edp/variants"):
+    for folder in SCENE_FOLDERS:
         path = os.path.join(folder, scene + ".edp")
         if os.path.isfile(os.path.join(ROOT, path)):
             return path
-    known = sorted(os.path.splitext(f)[0] for folder in ("edp/scenes", "edp/variants")
-                   for f in os.listdir(os.path.join(ROOT, folder)) if f.endswith(".edp"))
+    known = scenes()
     close = difflib.get_close_matches(scene, known, n=3)
     raise SceneError(f"unknown scene '{scene}'" + (f" (did you mean {', '.join(close)}?)" if close else "")
                      + f"; scenes: {' '.join(known)}")
@@ -45,13 +57,18 @@ _OPTIONS = {}
 
 
 def options(scene):
-    """{name without the dash: {"type", "default", "meaning"}} of a scene, from its -help tsv."""
+    """{name without the dash: {"type", "default", "meaning"}} of a scene, in the order it reads
+    them, from its `-help tsv` (cached: one FreeFEM start per scene and process)."""
     if scene not in _OPTIONS:
         path = script(scene)
         help_run = subprocess.run([FF, path, "-help", "tsv"], cwd=ROOT, capture_output=True, text=True)
         if help_run.returncode != 0:
-            raise SceneError(f"{scene}: -help tsv failed (exit {help_run.returncode}): {help_run.stdout[-300:]}")
-        parsed = param_reference.parse_tsv(scene, help_run.stdout)
+            raise SceneError(f"{scene}: -help tsv failed (exit {help_run.returncode}): "
+                             + "\n".join((help_run.stdout + help_run.stderr).strip().splitlines()[-LOG_LINES:]))
+        try:
+            parsed = param_reference.parse_tsv(scene, help_run.stdout)
+        except ValueError as e:
+            raise SceneError(str(e)) from None
         _OPTIONS[scene] = {o["name"][1:]: {k: o[k] for k in ("type", "default", "meaning")} for o in parsed}
     return _OPTIONS[scene]
 
@@ -61,41 +78,64 @@ def check_option(scene, name):
     known = options(scene)
     if name not in known:
         close = difflib.get_close_matches(name, list(known), n=3)
-        raise SceneError(f"{scene} has no option -{name}" + (f" (did you mean {', '.join('-' + c for c in close)}?)"
-                                                             if close else "") + f"; its options: "
-                         + " ".join("-" + k for k in known))
+        raise SceneError(f"{scene} has no option -{name}"
+                         + (f" (did you mean {', '.join('-' + c for c in close)}?)" if close else "")
+                         + "; its options: " + " ".join("-" + k for k in known))
+
+
+def word(value):
+    """An option value as FreeFEM's getARGV reads it: booleans as 0/1, numbers in full precision."""
+    if isinstance(value, bool):
+        return str(int(value))
+    if isinstance(value, float):
+        return repr(value)
+    return str(value)
 
 
 def command(scene, out, **values):
-    """The argument list that runs `scene` into `out` with the options `values` (name=value)."""
+    """The argument list that runs `scene` into `out` with the options `values` (name=value),
+    each name checked first."""
     words = [FF, script(scene)]
     for name, value in values.items():
+        if name == "out":
+            raise SceneError(f"{scene}: give the output folder as run()'s `out`, not as an option")
         check_option(scene, name)
-        words += ["-" + name, str(value)]
+        words += ["-" + name, word(value)]
     return words + ["-out", str(out)]
 
 
 def run(scene, out, quiet=True, **values):
-    """Runs the scene into `out`; returns `out`. Raises SceneError with the log's last lines."""
+    """Runs the scene into `out` with the options `values` (g=1000, steps=300); returns `out`.
+    quiet=True adds -quiet 1 when the scene has that option (no line per step). Raises SceneError
+    naming the scene and its options, with the run's error line and the last lines of its log."""
     if quiet and "quiet" in options(scene) and "quiet" not in values:
         values["quiet"] = 1
-    result = subprocess.run(command(scene, out, **values), cwd=ROOT, capture_output=True, text=True)
+    words = command(scene, out, **values)
+    result = subprocess.run(words, cwd=ROOT, capture_output=True, text=True)
     if result.returncode != 0:
-        log = (result.stdout + result.stderr).strip().splitlines()
+        log = (result.stdout + "\n" + result.stderr).strip().splitlines()
         errors = [ln for ln in log if ln.startswith("error:")]
-        raise SceneError(f"{scene} into {out} failed (exit {result.returncode}): "
-                         + ("\n".join(errors) if errors else "\n".join(log[-8:])))
+        given = " ".join(words[2:])
+        raise SceneError(f"{scene} {given} failed (exit {result.returncode})"
+                         + (f": {errors[0][len('error:'):].strip()}" if errors else "")
+                         + "\n  last lines of its log:\n    " + "\n    ".join(log[-LOG_LINES:]))
     return out
 
 
 def read_csv(path):
-    """{column: numpy array} of a CSV the scenes write (`#` lines skipped); None if absent."""
+    """{column: numpy array} of a CSV the scenes write (`#` lines skipped; a column that is not all
+    numbers stays strings); None if the file is absent."""
     if not os.path.isfile(path):
         return None
     with open(path) as f:
-        lines = [ln for ln in f if not ln.startswith("#")]
-    names = lines[0].strip().split(",")
-    rows = [ln.strip().split(",") for ln in lines[1:] if ln.strip()]
+        lines = [ln.rstrip("\n") for ln in f if not ln.startswith("#") and ln.strip()]
+    if not lines:
+        raise SceneError(f"{path} has no header line")
+    names = lines[0].split(",")
+    rows = [ln.split(",") for ln in lines[1:]]
+    for number, row in enumerate(rows, 2):
+        if len(row) != len(names):
+            raise SceneError(f"{path}: data line {number} has {len(row)} fields, the header {len(names)}")
     columns = {}
     for k, name in enumerate(names):
         values = [r[k] for r in rows]
@@ -107,16 +147,26 @@ def read_csv(path):
 
 
 class Results:
-    """What a scene wrote to a folder: summary (dict), history, points, contact (column arrays)."""
+    """What a scene wrote to a folder: summary (dict from summary.json); history, points, contact
+    (history.csv, points.csv, contact-final.csv as {column: numpy array}; None where the scene
+    writes no such file)."""
 
     def __init__(self, out):
         self.out = out
-        with open(os.path.join(out, "summary.json")) as f:
+        path = os.path.join(out, "summary.json")
+        if not os.path.isfile(path):
+            raise SceneError(f"no summary.json in {out}: no run finished there (a scene writes it last)")
+        with open(path) as f:
             self.summary = json.load(f)
         self.history = read_csv(os.path.join(out, "history.csv"))
         self.points = read_csv(os.path.join(out, "points.csv"))
         self.contact = read_csv(os.path.join(out, "contact-final.csv"))
 
+    def __repr__(self):
+        files = [n for n in ("history", "points", "contact") if getattr(self, n) is not None]
+        return f"Results({self.out!r}: summary, {', '.join(files) or 'no CSV'})"
+
 
 def read(out):
+    """The results a finished run wrote to `out` (Results)."""
     return Results(out)
