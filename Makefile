@@ -133,20 +133,25 @@ test: plugin meshes
 	@cd build && ctest --output-on-failure -j2
 
 # A parameter sweep (tools/sweep.py): each value of PARAM run in parallel (JOBS, at most the cores),
-# then results/sweeps/<scene>-<param>/table.csv and overlay figures. Every make variable reaches
-# the shell through the environment, expanded as words but never parsed as commands (set -f: no
-# file-name globbing either).
+# then results/sweeps/<scene>-<param>/table.csv and overlay figures. Nothing the user types is
+# pasted into the recipe: every make variable reaches the shell through the environment. ARGS is
+# read by sweep.py itself (--env-args: split into words like a shell's, never run by one, so
+# ARGS='-steps 30; touch x' is the option -steps '30;' and two stray words, an error, and nothing
+# runs); VALUES is only split into words by the recipe (set -f: no file-name globbing either).
+# OUT counts only when given (command line or environment): make ensemble's default OUT is not a
+# sweep's folder, wherever its line stands in this file.
 SWEEP_OUT_DEFAULT = results/sweeps/$(SCENE)-$(PARAM)
 sweep: export SWEEP_SCENE := $(value SCENE)
 sweep: export SWEEP_PARAM := $(value PARAM)
 sweep: export SWEEP_VALUES := $(value VALUES)
 sweep: export SWEEP_ARGS := $(value ARGS)
 sweep: export SWEEP_JOBS := $(or $(value JOBS),2)
-sweep: export SWEEP_DIR := $(or $(value OUT),$(SWEEP_OUT_DEFAULT))
+sweep: export SWEEP_DIR := $(if $(filter command line environment environment override override,$(origin OUT)),$(value OUT),$(SWEEP_OUT_DEFAULT))
 sweep: check-scene plugin meshes
 	@set -f; if [ -z "$$SWEEP_PARAM" ] || [ -z "$$SWEEP_VALUES" ]; then \
 	  echo "error: make sweep needs PARAM=<option without its dash> and VALUES='<v1> <v2> ...'" >&2; exit 2; fi; \
-	  $(PYTHON) tools/sweep.py "$$SWEEP_SCENE" "$$SWEEP_PARAM" $$SWEEP_VALUES --jobs "$$SWEEP_JOBS" --out "$$SWEEP_DIR"
+	  $(PYTHON) tools/sweep.py "$$SWEEP_SCENE" "$$SWEEP_PARAM" $$SWEEP_VALUES --jobs "$$SWEEP_JOBS" \
+	    --out "$$SWEEP_DIR" --env-args SWEEP_ARGS
 
 # Speed against error, all measured in one run: docs/benchmarks.md, results/bench/summary.json.
 bench: plugin meshes $(BENCH_MESHES)
