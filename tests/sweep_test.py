@@ -1,20 +1,35 @@
 #!/usr/bin/python3
 """The Python driver and the sweep (tools/sma_driver.py, tools/sweep.py, make sweep).
 
-On sleeve-radial (300 steps, about 0.5 s a run), -g swept over 250, 500, 1000 through `make sweep`:
-  - each row of table.csv equals that run's summary.json (first contact, austenite, pressures);
-  - the g = 500 run's history.csv equals, byte for byte, the same scene run directly by tools/ff
-    with the same options (an invocation that does not go through the driver);
-  - the physics of the sweep: a larger exchange coefficient warms the ring faster, so the first
-    contact and the austenite come no later (strictly earlier here); the final state (all
-    austenite, the ring elastic on the pipe: one linear contact problem whatever the history) has
-    the same pressure to round-off (relative 1e-9);
-  - sma_driver.read gives the arrays: the last history row's mean pressure is the summary's final;
-  - the two figures and sweep.json are written, and the legend groups no curves (they differ);
-    a sweep of -slipnoise on sleeve-circular (it only classifies the final nodes) gives curves
-    that coincide, which share one legend entry;
-  - an unknown PARAM, an unknown scene, and a misspelt option among ARGS each fail (non-zero
-    exit) naming it; ARGS holding `; touch <file>` runs nothing.
+On sleeve-radial (300 steps, about 0.5 s a run), -g swept over 250, 500, 1000 through `make sweep`
+(into a folder whose name holds a space):
+  (a) each row of table.csv equals that run's summary.json, key by key (first contact and
+      austenite steps and inner temperatures, final and peak mean pressure, iteration maxima, wall
+      time), and its times equal step x dt (dt = tend / steps from the summary's parameters);
+  (b) the g = 500 run's history.csv equals, byte for byte, the same scene run directly by tools/ff
+      with the same options (an invocation that does not go through the driver);
+  (c) physics: a larger exchange coefficient warms the ring no slower, so the first contact and
+      the austenite come no later. The final pressure does not depend on g: every run ends all
+      austenite (asserted on its last history row), where the law has neither a transformation
+      nor a thermal strain, so the last step solves the same elastic contact problem whatever the
+      temperature; each run accepts its displacement when the DC loop's relative change of u is at
+      most its own dc_tol (summary.json parameters.dc_tol; fp_tol acts on T, which does not enter
+      that problem), the pressure being linear in u: two runs may differ by up to dc_tol each, so
+      the bound is 2 x the largest dc_tol. (Measured: 0, the last steps stop on the DC loop's
+      exact test, no phase changed.)
+  sma_driver.read gives the arrays (the last history row's mean pressure is the summary's final)
+  and fails naming a folder without summary.json;
+  the two figures and sweep.json are written, the g curves differ (no shared legend entry); a
+  sweep of -checkpoint 0 / 100 (checkpoints change no output) gives curves that coincide, which
+  share one entry; sweep.same_curve joins curves 0.05 % apart and not 0.2 %;
+  a scene without a contact history (beam): the table only (every number of its summary.json, its
+  meshes' figures named <mesh>.<key>), no figure, said on the console and in sweep.json;
+  (d) an unknown PARAM and an unknown scene (through make and tools/sweep.py), and a misspelt
+      option among ARGS each fail (non-zero exit) naming it, before any run;
+  (e) ARGS holding `; touch <file>` and VALUES holding `$(touch <file>)` run nothing;
+  a value whose run fails (g = -1) leaves the others done, exits 1, and sweep.json holds its error
+  and the end of its log; negative values (-5e-6) are values, not flags; a value given twice is
+  refused.
 Writes results/checks/sweep.json.
 """
 import json
@@ -23,20 +38,55 @@ import subprocess
 import sys
 import tempfile
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools"))
+import numpy as np
 
-from checklib import ROOT, check, finish, record  # noqa: E402
-import sma_driver as sma  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checklib import ROOT, check, finish, record, rows  # noqa: E402
+import sma_driver as sma  # noqa: E402  (checklib puts tools/ on the path)
+import sweep  # noqa: E402
 
 VALUES = ["250", "500", "1000"]
 COMMON = ["-steps", "300"]
+# table.csv column -> summary.json key (the columns sweep.py must write for a sleeve scene).
+FROM_SUMMARY = {"first_contact_step": "first_contact_step", "T_inner_first_contact_K": "T_inner_first_contact",
+                "austenite_step": "austenite_step", "T_inner_austenite_K": "T_inner_austenite",
+                "final_pressure_mean_Pa": "final_pressure_mean", "peak_pressure_mean_Pa": "peak_pressure_mean",
+                "fixed_point_iterations_max": "fixed_point_iterations_max",
+                "dc_iterations_max": "dc_iterations_max", "wall_s": "wall_seconds"}
+STEP_OF_TIME = {"first_contact_time_s": "first_contact_step", "austenite_time_s": "austenite_step"}
 
 
-def make(*words, env_extra=None):
+def make(*words):
     env = {k: v for k, v in os.environ.items() if k not in ("MAKEFLAGS", "MFLAGS", "MAKELEVEL")}
     return subprocess.run(["make", "--no-print-directory", "sweep", *words], cwd=ROOT, env=env,
                           capture_output=True, text=True, timeout=300)
+
+
+def sweep_tool(*words):
+    return subprocess.run([sys.executable, "tools/sweep.py", *words], cwd=ROOT, capture_output=True, text=True,
+                          timeout=300)
+
+
+def first_error(result):
+    lines = [ln for ln in result.stderr.splitlines() if ln.startswith("error:")]
+    return lines[0][:160] if lines else result.stderr.strip()[-160:]
+
+
+def table_matches(table, summaries):
+    """The mismatches between table.csv's rows and the runs' summary.json (empty: none)."""
+    bad = []
+    missing = [c for c in list(FROM_SUMMARY) + list(STEP_OF_TIME) if c not in table[0]]
+    if missing:
+        return [f"columns {missing} missing"]
+    for row, s in zip(table, summaries):
+        for column, key in FROM_SUMMARY.items():
+            if float(row[column]) != s[key]:
+                bad.append(f"{column} {row[column]} != {s[key]}")
+        dt = s["parameters"]["tend"] / s["parameters"]["steps"]
+        for column, key in STEP_OF_TIME.items():
+            if abs(float(row[column]) - s[key] * dt) > 1e-9 * s[key] * dt:
+                bad.append(f"{column} {row[column]} != {s[key]} x {dt}")
+    return bad
 
 
 def main():
@@ -45,66 +95,127 @@ def main():
         out = os.path.join(tmp, "g sweep")
         swept = make("SCENE=sleeve-radial", "PARAM=g", f"VALUES={' '.join(VALUES)}", "ARGS=" + " ".join(COMMON),
                      f"OUT={out}")
-        check(swept.returncode == 0, f"make sweep exits 0 ({swept.stderr.strip()[-300:]})")
-        rows = sma.read_csv(os.path.join(out, "table.csv"))
-        summaries = [sma.read(os.path.join(out, f"g={v}")).summary for v in VALUES]
-        same = all(rows[col][i] == s[key] for i, s in enumerate(summaries)
-                   for key, col in (("first_contact_step", "first_contact_step"), ("austenite_step", "austenite_step"),
-                                    ("final_pressure_mean", "final_pressure_mean_Pa"),
-                                    ("peak_pressure_mean", "peak_pressure_mean_Pa")))
-        check(same and list(rows["g"]) == [float(v) for v in VALUES],
-              "table.csv: one row per value, equal to each run's summary.json")
+        check(swept.returncode == 0, f"make sweep exits 0 ({first_error(swept) if swept.returncode else ''})")
+        if swept.returncode != 0:
+            finish()
+        table = rows(os.path.join(out, "table.csv"))
+        runs = [sma.read(os.path.join(out, f"g={v}")) for v in VALUES]
+        summaries = [r.summary for r in runs]
+        bad = table_matches(table, summaries)
+        check([row["g"] for row in table] == VALUES and not bad,
+              f"(a) table.csv: one row per value, equal to each run's summary.json ({bad[:3] or 'every column'})")
 
         direct = os.path.join(tmp, "direct")
         subprocess.run([sma.FF, "edp/scenes/sleeve-radial.edp", *COMMON, "-g", "500", "-quiet", "1", "-out", direct],
                        cwd=ROOT, check=True, capture_output=True)
         a = open(os.path.join(out, "g=500", "history.csv"), "rb").read()
         b = open(os.path.join(direct, "history.csv"), "rb").read()
-        check(a == b, f"the sweep's g = 500 history.csv equals a direct tools/ff run's byte for byte ({len(a)} bytes)")
+        check(a == b, f"(b) the sweep's g = 500 history.csv equals a direct tools/ff run's byte for byte "
+              f"({len(a)} bytes)")
 
         first = [s["first_contact_step"] for s in summaries]
         austenite = [s["austenite_step"] for s in summaries]
+        check(all(0 < later <= earlier for earlier, later in zip(first, first[1:]))
+              and all(0 < later <= earlier for earlier, later in zip(austenite, austenite[1:])),
+              f"(c) larger g ({', '.join(VALUES)}): first contact no later (steps {first}), austenite no later "
+              f"(steps {austenite})")
         finals = [s["final_pressure_mean"] for s in summaries]
-        spread = (max(finals) - min(finals)) / finals[0]
-        check(first[0] > first[1] > first[2] and austenite[0] > austenite[1] > austenite[2],
-              f"larger g: earlier first contact {first} and austenite {austenite}")
-        check(spread <= 1e-9, f"final pressure independent of g: {[round(p / 1e6, 6) for p in finals]} MPa, "
-              f"relative spread {spread:.1e} <= 1e-9")
-        r = sma.read(os.path.join(out, "g=1000"))
-        check(r.history["pressure_mean"][-1] == r.summary["final_pressure_mean"] and r.points is None,
-              "sma_driver.read: history arrays (last mean pressure = the summary's final); no points.csv in 1D")
-        sweep = json.load(open(os.path.join(out, "sweep.json")))
-        check(sweep["figures"] == ["force-temperature.png", "force-time.png"]
-              and all(os.path.getsize(os.path.join(out, f)) > 10000 for f in sweep["figures"])
-              and all(run["status"] == "done" for run in sweep["runs"]),
-              f"sweep.json lists the runs and the two figures ({sweep['figures']})")
-        check(sweep.get("jobs") == min(2, os.cpu_count() or 1), f"runs in parallel on {sweep.get('jobs')} jobs")
-        check(sweep["curves_coinciding_within_0.1_percent"] == [], "the three g curves differ: no shared legend")
-        # -slipnoise only classifies the final contact nodes (sticking or not): the curves coincide.
-        same_out = os.path.join(tmp, "slipnoise")
-        same = make("SCENE=sleeve-circular", "PARAM=slipnoise", "VALUES=1e-12 1e-9",
-                    "ARGS=-mesh meshes/sleeve-coarse.msh -steps 300 -vtkevery 0", f"OUT={same_out}")
+        spread = (max(finals) - min(finals)) / max(finals)
+        bound = 2 * max(s["parameters"]["dc_tol"] for s in summaries)
+        all_austenite = all(r.history["fraction_austenite"][-1] == 1 for r in runs)
+        check(all_austenite and spread <= bound,
+              f"(c) final pressure independent of g: {[round(p / 1e6, 6) for p in finals]} MPa, every run "
+              f"all austenite at its end ({all_austenite}), relative spread {spread:.1e} <= 2 x dc_tol = {bound:g}")
+        r = runs[2]
+        check(r.history["pressure_mean"][-1] == r.summary["final_pressure_mean"]
+              and len(r.history["t"]) == r.summary["n_steps"],
+              "sma_driver.read: history.csv as arrays (one row a step; the last mean pressure is the summary's final)")
+        try:
+            sma.read(tmp)
+            unfinished = "no error"
+        except sma.SceneError as e:
+            unfinished = str(e)
+        check(unfinished.startswith(f"no summary.json in {tmp}"), f"sma_driver.read of an unfinished run: {unfinished}")
+
+        record_ = json.load(open(os.path.join(out, "sweep.json")))
+        check(record_["figures"] == ["force-temperature.png", "force-time.png"]
+              and all(os.path.getsize(os.path.join(out, f)) > 10000 for f in record_["figures"])
+              and [run["status"] for run in record_["runs"]] == ["done"] * 3
+              and [run["out"] for run in record_["runs"]] == [os.path.join(out, f"g={v}") for v in VALUES]
+              and record_["args"] == COMMON and record_["values"] == VALUES,
+              f"sweep.json: the values, the options {record_['args']}, each run's folder and status, "
+              f"the figures {record_['figures']}")
+        check(record_["jobs"] == min(2, os.cpu_count() or 1), f"runs in parallel on {record_['jobs']} jobs (JOBS=2)")
+        check(record_["curves_coinciding_within_0.1_percent"] == [], "the three g curves differ: no shared legend entry")
+        # Checkpoints change no output (tests/resume_test.py): the two curves coincide.
+        same_out = os.path.join(tmp, "checkpoint")
+        same = make("SCENE=sleeve-radial", "PARAM=checkpoint", "VALUES=0 100", "ARGS=-steps 300", f"OUT={same_out}")
         groups = json.load(open(os.path.join(same_out, "sweep.json")))["curves_coinciding_within_0.1_percent"] \
-            if same.returncode == 0 else None
-        check(groups == [["1e-12", "1e-9"]], f"curves that coincide share one legend entry: {groups}")
+            if same.returncode == 0 else first_error(same)
+        t = np.linspace(0, 1, 50)
+        p = np.sin(3 * t) + 1
+        check(groups == [["0", "100"]] and sweep.same_curve((t, p), (t, p * 1.0005))
+              and not sweep.same_curve((t, p), (t, p * 1.002)),
+              f"curves that coincide share one legend entry ({groups}); 0.05 % apart coincide, 0.2 % do not")
+
+        beam_out = os.path.join(tmp, "beam")
+        beam = make("SCENE=beam", "PARAM=F", "VALUES=6e7 7e7", "ARGS=-levels coarse", f"OUT={beam_out}")
+        beam_table = rows(os.path.join(beam_out, "table.csv")) if beam.returncode == 0 else []
+        beam_record = json.load(open(os.path.join(beam_out, "sweep.json"))) if beam.returncode == 0 else {}
+        fractions = [sma.read(os.path.join(beam_out, f"F={v}")).summary["meshes"][0]["fraction_austenite"]
+                     for v in ("6e7", "7e7")] if beam.returncode == 0 else []
+        check(beam.returncode == 0 and [float(row["coarse.fraction_austenite"]) for row in beam_table] == fractions
+              and beam_record.get("figures") == [] and "table only" in beam_record.get("note", "")
+              and "table only" in beam.stdout
+              and not any(f.endswith(".png") for f in os.listdir(beam_out)),
+              f"beam (no contact history): the table only, its numbers from summary.json ({fractions}), said so")
 
         bad_param = make("SCENE=sleeve-radial", "PARAM=gg", "VALUES=1 2", f"OUT={os.path.join(tmp, 'x')}")
-        check(bad_param.returncode != 0 and "has no option -gg (did you mean -g" in bad_param.stderr,
-              f"an unknown PARAM fails naming it: {bad_param.stderr.strip().splitlines()[:1]}")
-        bad_scene = subprocess.run([sys.executable, "tools/sweep.py", "sleeve-radail", "g", "1"], cwd=ROOT,
-                                   capture_output=True, text=True)
-        check(bad_scene.returncode != 0 and "unknown scene 'sleeve-radail' (did you mean sleeve-radial" in bad_scene.stderr,
-              f"an unknown scene fails naming it: {bad_scene.stderr.strip()[:120]}")
+        check(bad_param.returncode != 0 and "sleeve-radial has no option -gg (did you mean -g" in bad_param.stderr
+              and not os.path.exists(os.path.join(tmp, "x")),
+              f"(d) an unknown PARAM fails naming it, before any run: {first_error(bad_param)}")
+        bad_scene = sweep_tool("sleeve-radail", "g", "1")
+        bad_scene_make = make("SCENE=sleeve-radail", "PARAM=g", "VALUES=1")
+        check(bad_scene.returncode != 0 and "unknown scene 'sleeve-radail' (did you mean sleeve-radial"
+              in bad_scene.stderr and bad_scene_make.returncode != 0
+              and "unknown scene 'sleeve-radail'" in bad_scene_make.stderr,
+              f"(d) an unknown scene fails naming it: {first_error(bad_scene)}; make: {first_error(bad_scene_make)}")
+        typo = make("SCENE=sleeve-radial", "PARAM=g", "VALUES=300", "ARGS=-stpes 30", f"OUT={os.path.join(tmp, 'z')}")
+        check(typo.returncode != 0 and "no option -stpes (did you mean -steps" in typo.stderr,
+              f"(d) a misspelt option among ARGS fails before any run: {first_error(typo)}")
+
         injected = os.path.join(tmp, "injected")
         bad_args = make("SCENE=sleeve-radial", "PARAM=g", "VALUES=300", f"ARGS=-steps 30; touch {injected}",
                         f"OUT={os.path.join(tmp, 'y')}")
-        check(bad_args.returncode != 0 and not os.path.exists(injected),
-              f"ARGS with '; touch' runs nothing and fails: {bad_args.stderr.strip().splitlines()[:1]}")
-        typo = make("SCENE=sleeve-radial", "PARAM=g", "VALUES=300", "ARGS=-stpes 30", f"OUT={os.path.join(tmp, 'z')}")
-        check(typo.returncode != 0 and "no option -stpes (did you mean -steps" in typo.stderr,
-              f"a misspelt option among ARGS fails before any run: {typo.stderr.strip().splitlines()[:1]}")
+        check(bad_args.returncode != 0 and not os.path.exists(injected) and not os.path.exists(os.path.join(tmp, "y")),
+              f"(e) ARGS with '; touch' runs nothing and fails: {first_error(bad_args)}")
+        injected_value = os.path.join(tmp, "injected-value")
+        bad_value = make("SCENE=sleeve-radial", "PARAM=g", f"VALUES=300 $(touch {injected_value})",
+                         "ARGS=-steps 5", f"OUT={os.path.join(tmp, 'w')}")
+        check(bad_value.returncode != 0 and not os.path.exists(injected_value),
+              f"(e) VALUES with '$(touch ...)' runs no command (the words are values FreeFEM refuses): "
+              f"{first_error(bad_value)}")
+
+        # A value the scene refuses at run time: the others still run; the sweep exits 1 naming it.
+        partial_out = os.path.join(tmp, "partial")
+        partial = sweep_tool("sleeve-radial", "g", "500", "-1", "--out", partial_out, "--", "-steps", "30")
+        partial_runs = json.load(open(os.path.join(partial_out, "sweep.json")))["runs"]
+        check(partial.returncode == 1 and [run["status"] for run in partial_runs] == ["done", "failed"]
+              and "sleeve-radial: -g -1 must be >= 0" in partial_runs[1]["error"]
+              and "last lines of its log" in partial_runs[1]["error"]
+              and [row["g"] for row in rows(os.path.join(partial_out, "table.csv"))] == ["500"]
+              and "for -g -1 failed" in partial.stderr,
+              f"a run that fails (g = -1) leaves the others; exit {partial.returncode}, sweep.json has its error "
+              f"line and log: {partial_runs[1].get('error', '').splitlines()[0][:110]}")
+
+        parsed = sweep.parse(["sleeve-offset", "offset", "-5e-6", "0", "5e-6", "--jobs", "1"])
+        twice = sweep_tool("sleeve-radial", "g", "500", "500")
+        check(parsed["values"] == ["-5e-6", "0", "5e-6"] and parsed["jobs"] == 1
+              and twice.returncode == 2 and "500 of -g are given twice" in twice.stderr,
+              f"negative values are values ({parsed['values']}); a value given twice: {first_error(twice)}")
         measured = {"first_contact_steps": first, "austenite_steps": austenite, "final_pressures_Pa": finals,
-                    "final_relative_spread": spread}
+                    "final_relative_spread": spread, "final_spread_bound": bound,
+                    "table_columns": list(table[0])}
     record("sweep", {"test": "sweep", **measured})
     finish()
 
