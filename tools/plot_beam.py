@@ -16,19 +16,15 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plot_sleeve import save  # noqa: E402
+
 PHASE_COLOURS = {0: "0.6", 1: "black", 2: "white"}
 
 
 def read_rows(path):
     with open(path, newline="") as f:
         return list(csv.DictReader(f))
-
-
-def save(fig, path):
-    partial = path + ".partial.png"
-    fig.savefig(partial, dpi=130, bbox_inches="tight")
-    plt.close(fig)
-    os.replace(partial, path)
 
 
 def phase_map(outdir, mesh):
@@ -46,7 +42,7 @@ def phase_map(outdir, mesh):
                  f"austenite grey {mesh['fraction_austenite']:.3f}, martensite 1 black "
                  f"{mesh['fraction_m1']:.3f}, martensite 2 white {mesh['fraction_m2']:.3f}",
                  fontsize=8)
-    save(fig, os.path.join(outdir, f"phase-{mesh['name']}.png"))
+    save(fig, os.path.join(outdir, f"phase-{mesh['name']}.png"), 130, tight=True)
 
 
 def convergence(outdir, meshes):
@@ -63,7 +59,7 @@ def convergence(outdir, meshes):
     ax.set_ylabel("relative change of u (Euclidean norm)")
     ax.set_title("DC convergence on the beam (paper Fig. 10)")
     ax.legend(fontsize=8)
-    save(fig, os.path.join(outdir, "dc-convergence.png"))
+    save(fig, os.path.join(outdir, "dc-convergence.png"), 130, tight=True)
 
 
 def main():

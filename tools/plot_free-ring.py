@@ -15,6 +15,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plot_sleeve import save  # noqa: E402
 from units import celsius  # noqa: E402
 
 
@@ -45,10 +46,7 @@ def main():
     bx.set_xlabel("t (s)")
     bx.set_ylabel("area fraction (1)")
     bx.legend(fontsize=8)
-    partial = os.path.join(outdir, "temperature.partial.png")
-    fig.savefig(partial, dpi=120, bbox_inches="tight")
-    plt.close(fig)
-    os.replace(partial, os.path.join(outdir, "temperature.png"))
+    save(fig, os.path.join(outdir, "temperature.png"), 120, tight=True)
 
 
 if __name__ == "__main__":

@@ -66,10 +66,11 @@ def fields_time(path):
     return first.lstrip("# ").split(";")[0].strip()
 
 
-def save(fig, path, dpi):
-    """Writes the PNG under a temporary name, then renames it: never a half-drawn file."""
+def save(fig, path, dpi, tight=False):
+    """Writes the PNG under a temporary name, then renames it: never a half-drawn file (every
+    plot tool's figures go through here). tight: crop to the drawn area (bbox_inches="tight")."""
     partial = path[:-len(".png")] + ".partial.png"
-    fig.savefig(partial, dpi=dpi)
+    fig.savefig(partial, dpi=dpi, **({"bbox_inches": "tight"} if tight else {}))
     plt.close(fig)
     os.replace(partial, path)
 

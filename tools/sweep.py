@@ -243,16 +243,9 @@ def coincident_groups(curves):
     return groups
 
 
-def save(fig, path, plt):
-    partial = path[:-len(".png")] + ".partial.png"
-    fig.savefig(partial, dpi=110)
-    plt.close(fig)
-    os.replace(partial, path)
-    return path
-
-
 def draw(out, scene, param, values, runs, plt):
     """The two overlays; returns (the paths written, the groups of values whose curves coincide)."""
+    from plot_sleeve import save  # every tool's PNGs: a temporary name, then renamed
     histories = [r.history for r in runs]
     temperature = [(h["T_inner_mean"] - KELVIN_AT_0C, h["pressure_mean"] / 1e6) for h in histories]
     time = [(h["t"], h["pressure_mean"] / 1e6) for h in histories]
@@ -271,7 +264,8 @@ def draw(out, scene, param, values, runs, plt):
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    written.append(save(fig, os.path.join(out, "force-temperature.png"), plt))
+    written.append(os.path.join(out, "force-temperature.png"))
+    save(fig, written[-1], 110)
 
     # Against time: the transient in the main panel, up to a quarter past the last run's austenite
     # (the whole run when one never turns austenite), the whole run in a small panel beside it.
@@ -293,7 +287,8 @@ def draw(out, scene, param, values, runs, plt):
     whole.grid(alpha=0.3)
     fig.suptitle(title)
     fig.tight_layout()
-    written.append(save(fig, os.path.join(out, "force-time.png"), plt))
+    written.append(os.path.join(out, "force-time.png"))
+    save(fig, written[-1], 110)
     return written, [[values[i] for i in g] for g in groups]
 
 
