@@ -29,6 +29,14 @@
 //                 real[] r, real[] info)   projected SOR on the full system K u = b (mode a);
 //       contact has one row per contact node: [vertex, nx, ny, gap, threshold g, t.u previous];
 //       u warm start in/out; r = interleaved (r_n, r_t) per node; info = [residual, converged].
+//   long SpdFactorize(matrix A, long handle)   factorises the symmetric positive definite A in the
+//       plugin (sparse LDL', AMD ordering: plugin/core/sparse_spd.hpp) into the slot `handle`
+//       (< 0: a new slot); returns the slot. Refactorising a slot with the same pattern is numeric
+//       only. Fails, naming the fault, on a non-square, non-symmetric or indefinite A.
+//   long SpdSolve(long handle, real[] b, real[] x)   x = A^-1 b (x resized)
+//   long SpdDelassus(long handle, matrix H, real[] free, real[int,int] W, long normalOnly)
+//       W = H S A^-1 S H', S = diag(free), by blocks of right-hand sides (no dense A^-1 H' kept);
+//       normalOnly: only the even (normal) rows and columns, the others 0.
 //   long RoundToFloat(real[] x)   rounds every value to the nearest single-precision float
 //       (IEEE round to nearest even), in place; returns how many values changed.
 //   real SmaPluginVersion()  version stamp, checked by edp/lib/plugin.idp.
@@ -61,6 +69,7 @@
 #include <cstring>
 #include <exception>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <unistd.h>
@@ -73,6 +82,7 @@
 #include "core/obstacle.hpp"
 #include "core/psor.hpp"
 #include "core/psor_full.hpp"
+#include "core/sparse_spd.hpp"
 #include "core/phase_fraction.hpp"
 #include "core/phase_projection.hpp"
 
@@ -196,6 +206,77 @@ long PsorCondensed(KNM<double>* const& W, KN<double>* const& q, KN<double>* cons
   });
 }
 
+// The factorisations of SpdFactorize, by slot: the glue's only state (the core holds none). They
+// live until the process ends.
+std::vector<std::unique_ptr<sma::SpdFactor>>& Factors() {
+  static std::vector<std::unique_ptr<sma::SpdFactor>> factors;
+  return factors;
+}
+sma::SpdFactor& FactorAt(long handle) {
+  if (handle < 0 || handle >= (long)Factors().size())
+    throw std::invalid_argument("no factorisation in slot " + std::to_string(handle) + " (SpdFactorize first)");
+  return *Factors()[handle];
+}
+// A FreeFEM sparse matrix as an Eigen one (its triplets; the FreeFEM matrix is not modified, so
+// that a factorisation FreeFEM keeps of it stays valid).
+sma::SparseMatrix ToEigen(Matrice_Creuse<double>* M) {
+  HashMatrix<int, double>* A = M->pHM();
+  if (!A) throw std::invalid_argument("the matrix is empty");
+  if (A->half) throw std::invalid_argument("the matrix is stored as a half: build it without solver = CG/Cholesky");
+  std::vector<Eigen::Triplet<double, int>> t;
+  t.reserve(A->nnz);
+  const int shift = A->fortran ? 1 : 0;
+  if (A->i) {
+    for (size_t k = 0; k < A->nnz; ++k) t.emplace_back(A->i[k] - shift, A->j[k] - shift, A->aij[k]);
+  } else if (A->p) {
+    for (int r = 0; r < A->n; ++r)
+      for (int k = A->p[r] - shift; k < A->p[r + 1] - shift; ++k) t.emplace_back(r, A->j[k] - shift, A->aij[k]);
+  } else {
+    throw std::invalid_argument("the matrix has neither triplets nor row pointers");
+  }
+  sma::SparseMatrix a(A->n, A->m);
+  a.setFromTriplets(t.begin(), t.end());
+  return a;
+}
+
+long SpdFactorize(Matrice_Creuse<double>* const& M, long const& handle) {
+  return guarded("SpdFactorize", [&] {
+    const sma::SparseMatrix a = ToEigen(M);
+    long slot = handle;
+    if (slot < 0) {
+      Factors().push_back(std::make_unique<sma::SpdFactor>());
+      slot = (long)Factors().size() - 1;
+    }
+    FactorAt(slot).factorize(a);
+    return slot;
+  });
+}
+
+long SpdSolve(long const& handle, KN<double>* const& b, KN<double>* const& x) {
+  return guarded("SpdSolve", [&] {
+    const sma::SpdFactor& f = FactorAt(handle);
+    if (b->N() != f.size())
+      throw std::invalid_argument("right-hand side of " + std::to_string(b->N()) + " values for a " +
+                                  std::to_string(f.size()) + " x " + std::to_string(f.size()) + " matrix");
+    if (x->N() != f.size()) x->resize(f.size());
+    f.solve(cview(b), view(x));
+    return (long)f.size();
+  });
+}
+
+long SpdDelassus(long const& handle, Matrice_Creuse<double>* const& H, KN<double>* const& free,
+                 KNM<double>* const& W, long const& normalOnly) {
+  return guarded("SpdDelassus", [&] {
+    const sma::SparseMatrix h = ToEigen(H);
+    const Eigen::MatrixXd w = sma::delassus(FactorAt(handle), h, cview(free), normalOnly != 0);
+    const long k = w.rows();
+    W->resize(k, k);
+    for (long i = 0; i < k; ++i)
+      for (long j = 0; j < k; ++j) (*W)(i, j) = w(i, j);
+    return k;
+  });
+}
+
 // Projected SOR on the full stiffness system; the matrix is read in CSR form from a copy: sorting
 // the caller's hash matrix in place (HashMatrix::CSR) invalidates the factorisation FreeFEM keeps
 // for K^-1 (measured: the next K^-1 solves were wrong), so the copy costs O(nnz) per call.
@@ -250,7 +331,7 @@ long RoundToFloat(KN<double>* const& x) {
   return changed;
 }
 
-double SmaPluginVersion() { return 5.0; }
+double SmaPluginVersion() { return 6.0; }
 
 // FreeFEM's time() has a resolution of one second and clock() counts CPU time; timings of the
 // scenes are wall-clock seconds from a monotonic clock.
@@ -339,6 +420,10 @@ static void Load_Init() {
              new OneOperator6_<long, KNM<double>*, A, A, A, A, A>(PsorCondensed));
   Global.Add("PsorFull", "(",
              new OneOperator7_<long, Matrice_Creuse<double>*, A, KNM<double>*, A, A, A, A>(PsorFull));
+  Global.Add("SpdFactorize", "(", new OneOperator2_<long, Matrice_Creuse<double>*, long>(SpdFactorize));
+  Global.Add("SpdSolve", "(", new OneOperator3_<long, long, A, A>(SpdSolve));
+  Global.Add("SpdDelassus", "(",
+             new OneOperator5_<long, long, Matrice_Creuse<double>*, A, KNM<double>*, long>(SpdDelassus));
   Global.Add("AuchmutyLocal", "(", new OneOperator5_<double, A, A, A, A, A>(AuchmutyLocal));
   Global.Add("RoundToFloat", "(", new OneOperator1_<long, A>(RoundToFloat));
   Global.Add("SmaPluginVersion", "(", new OneOperator0<double>(SmaPluginVersion));
