@@ -75,20 +75,27 @@ def nearest_points(grid, xy):
 
 
 def killed_run():
-    """A long run killed after 2 s into a directory with an old summary.json."""
+    """A long run killed once it has written a few frames, into a directory with an old summary.json."""
     out = os.path.join(TEST_RESULTS, "paraview-killed")
     shutil.rmtree(out, ignore_errors=True)
     os.makedirs(out)
     with open(os.path.join(out, "summary.json"), "w") as f:
         f.write('{"scene": "an earlier run"}\n')
     proc = subprocess.Popen([os.path.join(ROOT, "tools", "ff"), "edp/scenes/sleeve-circular.edp", "-mesh",
-                             "meshes/sleeve-coarse.msh", "-steps", "3000", "-vtkevery", "20", "-quiet", "1",
-                             "-out", out], cwd=ROOT, stdout=subprocess.DEVNULL, start_new_session=True)
-    time.sleep(2.0)
+                             "meshes/sleeve-coarse.msh", "-steps", "100000", "-tend", "10000", "-vtkevery", "20",
+                             "-quiet", "1", "-out", out], cwd=ROOT, stdout=subprocess.DEVNULL,
+                            start_new_session=True)
+    # Killed once 5 frames are out (at most 60 s): the run lasts minutes, whatever the machine.
+    deadline = time.time() + 60
+    frames = os.path.join(out, "frames")
+    while time.time() < deadline and proc.poll() is None:
+        if os.path.isdir(frames) and len(os.listdir(frames)) >= 5:
+            break
+        time.sleep(0.05)
     still_running = proc.poll() is None
     os.killpg(proc.pid, signal.SIGKILL)
     proc.wait()
-    check(still_running, "the 3000-step run was still running when killed after 2 s")
+    check(still_running, "the 100000-step run was still running when killed after its 5th frame")
     left = sorted(os.listdir(out))
     check(not any(name in left for name in ("summary.json", "history.csv", "points.csv", "contact-final.csv")),
           f"killed run: no summary.json, history.csv, points.csv, contact-final.csv (left: "

@@ -1,0 +1,172 @@
+// Unit tests of the plugin's sparse SPD factorisation and Delassus operator
+// (plugin/core/sparse_spd.hpp), against dense Eigen computations of the same quantities.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "core/sparse_spd.hpp"
+
+namespace {
+
+using sma::SparseMatrix;
+
+// The 5-point Laplacian of an nx x ny grid plus shift I: sparse, symmetric positive definite, the
+// pattern of a P1 stiffness on a structured mesh.
+SparseMatrix grid_laplacian(int nx, int ny, double shift) {
+  std::vector<Eigen::Triplet<double, int>> t;
+  auto id = [&](int i, int j) { return i * ny + j; };
+  for (int i = 0; i < nx; ++i)
+    for (int j = 0; j < ny; ++j) {
+      t.emplace_back(id(i, j), id(i, j), 4.0 + shift);
+      if (i > 0) t.emplace_back(id(i, j), id(i - 1, j), -1.0);
+      if (i + 1 < nx) t.emplace_back(id(i, j), id(i + 1, j), -1.0);
+      if (j > 0) t.emplace_back(id(i, j), id(i, j - 1), -1.0);
+      if (j + 1 < ny) t.emplace_back(id(i, j), id(i, j + 1), -1.0);
+    }
+  SparseMatrix a(nx * ny, nx * ny);
+  a.setFromTriplets(t.begin(), t.end());
+  return a;
+}
+
+Eigen::VectorXd random_vector(int n, std::mt19937& rng) {
+  std::normal_distribution<double> normal;
+  Eigen::VectorXd v(n);
+  for (int i = 0; i < n; ++i) v[i] = normal(rng);
+  return v;
+}
+
+double relative(const Eigen::VectorXd& a, const Eigen::VectorXd& b) { return (a - b).norm() / b.norm(); }
+
+std::vector<double> to_std(const Eigen::VectorXd& v) { return std::vector<double>(v.data(), v.data() + v.size()); }
+
+TEST(SparseSpd, SolveEqualsDenseSolve) {
+  std::mt19937 rng(1);
+  const SparseMatrix a = grid_laplacian(12, 9, 0.01);
+  sma::SpdFactor f;
+  f.factorize(a);
+  const Eigen::VectorXd b = random_vector(a.rows(), rng);
+  std::vector<double> bs = to_std(b), x(a.rows());
+  f.solve(bs, x);
+  const Eigen::VectorXd exact = Eigen::MatrixXd(a).llt().solve(b);
+  EXPECT_LT(relative(Eigen::Map<Eigen::VectorXd>(x.data(), x.size()), exact), 1e-12);
+  // A block of right-hand sides gives the same columns.
+  Eigen::MatrixXd block(a.rows(), 3);
+  for (int c = 0; c < 3; ++c) block.col(c) = random_vector(a.rows(), rng);
+  const Eigen::MatrixXd xb = f.solve(block), xe = Eigen::MatrixXd(a).llt().solve(block);
+  EXPECT_LT((xb - xe).norm() / xe.norm(), 1e-12);
+  EXPECT_GT(f.factor_nonzeros(), 0);
+}
+
+// A Dirichlet row marked by FreeFEM's tgv (1e30 on the diagonal, its couplings kept): its unknown
+// is b_i / 1e30 and the others solve the reduced system.
+TEST(SparseSpd, TgvRowsBehaveAsDirichlet) {
+  std::mt19937 rng(2);
+  SparseMatrix a = grid_laplacian(6, 5, 0.0);
+  const int pinned = 7;
+  a.coeffRef(pinned, pinned) = 1e30;
+  sma::SpdFactor f;
+  f.factorize(a);
+  Eigen::VectorXd b = random_vector(a.rows(), rng);
+  b[pinned] = 0.0;
+  std::vector<double> bs = to_std(b), x(a.rows());
+  f.solve(bs, x);
+  EXPECT_LT(std::fabs(x[pinned]), 1e-25);
+  // The reduced system: row and column `pinned` removed.
+  const int n = a.rows();
+  Eigen::MatrixXd dense(a), reduced(n - 1, n - 1);
+  Eigen::VectorXd rb(n - 1);
+  for (int i = 0, ri = 0; i < n; ++i) {
+    if (i == pinned) continue;
+    rb[ri] = b[i];
+    for (int j = 0, rj = 0; j < n; ++j)
+      if (j != pinned) reduced(ri, rj++) = dense(i, j);
+    ++ri;
+  }
+  const Eigen::VectorXd rx = reduced.llt().solve(rb);
+  for (int i = 0, ri = 0; i < n; ++i)
+    if (i != pinned) EXPECT_NEAR(x[i], rx[ri++], 1e-12 * rx.lpNorm<Eigen::Infinity>());
+}
+
+TEST(SparseSpd, RefactorisationWithNewValuesAndNewPattern) {
+  std::mt19937 rng(3);
+  sma::SpdFactor f;
+  f.factorize(grid_laplacian(8, 8, 0.5));
+  const SparseMatrix b = grid_laplacian(8, 8, 2.0);  // same pattern, new values
+  f.factorize(b);
+  Eigen::VectorXd rhs = random_vector(64, rng);
+  std::vector<double> rs = to_std(rhs), x(64);
+  f.solve(rs, x);
+  EXPECT_LT(relative(Eigen::Map<Eigen::VectorXd>(x.data(), 64), Eigen::MatrixXd(b).llt().solve(rhs)), 1e-12);
+  const SparseMatrix c = grid_laplacian(5, 7, 1.0);  // another size and pattern
+  f.factorize(c);
+  EXPECT_EQ(f.size(), 35);
+  Eigen::VectorXd rc = random_vector(35, rng);
+  std::vector<double> rcs = to_std(rc), xc(35);
+  f.solve(rcs, xc);
+  EXPECT_LT(relative(Eigen::Map<Eigen::VectorXd>(xc.data(), 35), Eigen::MatrixXd(c).llt().solve(rc)), 1e-12);
+}
+
+TEST(SparseSpd, RefusesWhatItCannotSolve) {
+  sma::SpdFactor f;
+  std::vector<double> b(4), x(4);
+  EXPECT_THROW(f.solve(b, x), std::invalid_argument);  // nothing factorised
+  SparseMatrix nonsymmetric = grid_laplacian(2, 2, 0.0);
+  nonsymmetric.coeffRef(0, 1) = -2.0;
+  try {
+    f.factorize(nonsymmetric);
+    FAIL() << "a non-symmetric matrix was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("not symmetric"), std::string::npos) << e.what();
+  }
+  SparseMatrix indefinite = grid_laplacian(2, 2, 0.0);
+  indefinite.coeffRef(3, 3) = -5.0;
+  try {
+    f.factorize(indefinite);
+    FAIL() << "an indefinite matrix was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("not positive definite"), std::string::npos) << e.what();
+  }
+  SparseMatrix rectangular(3, 4);
+  EXPECT_THROW(f.factorize(rectangular), std::invalid_argument);
+  f.factorize(grid_laplacian(2, 2, 0.0));
+  std::vector<double> short_b(3);
+  EXPECT_THROW(f.solve(short_b, x), std::invalid_argument);
+}
+
+// W = H S A^-1 S H' against the dense product, with supported dofs, by blocks smaller than the
+// number of contact rows; normal_only keeps only the even rows and columns.
+TEST(SparseSpd, DelassusEqualsDenseProduct) {
+  std::mt19937 rng(4);
+  const SparseMatrix a = grid_laplacian(10, 10, 0.1);
+  const int n = a.rows(), k = 12;
+  std::uniform_int_distribution<int> dof(0, n - 1);
+  std::vector<Eigen::Triplet<double, int>> t;
+  for (int r = 0; r < k; ++r)
+    for (int e = 0; e < 2; ++e) t.emplace_back(r, dof(rng), std::normal_distribution<double>()(rng));
+  SparseMatrix h(k, n);
+  h.setFromTriplets(t.begin(), t.end());
+  std::vector<double> free(n, 1.0);
+  for (int i = 0; i < n; i += 7) free[i] = 0.0;
+  sma::SpdFactor f;
+  f.factorize(a);
+  const Eigen::MatrixXd w = sma::delassus(f, h, free, false, 5);
+  const Eigen::VectorXd s = Eigen::Map<Eigen::VectorXd>(free.data(), n);
+  const Eigen::MatrixXd hs = Eigen::MatrixXd(h) * s.asDiagonal();
+  const Eigen::MatrixXd exact = hs * Eigen::MatrixXd(a).llt().solve(hs.transpose());
+  EXPECT_LT((w - exact).norm() / exact.norm(), 1e-12);
+  EXPECT_LT((w - w.transpose()).norm() / w.norm(), 1e-12);  // symmetric
+  const Eigen::MatrixXd wn = sma::delassus(f, h, free, true, 64);
+  for (int i = 0; i < k; ++i)
+    for (int j = 0; j < k; ++j) {
+      if (i % 2 == 0 && j % 2 == 0)
+        EXPECT_NEAR(wn(i, j), exact(i, j), 1e-12 * exact.norm());
+      else
+        EXPECT_EQ(wn(i, j), 0.0);
+    }
+  EXPECT_THROW(sma::delassus(f, SparseMatrix(k, n + 1), free, false), std::invalid_argument);
+}
+
+}  // namespace
