@@ -86,8 +86,12 @@ TEST(SparseSpd, TgvRowsBehaveAsDirichlet) {
     ++ri;
   }
   const Eigen::VectorXd rx = reduced.llt().solve(rb);
-  for (int i = 0, ri = 0; i < n; ++i)
-    if (i != pinned) EXPECT_NEAR(x[i], rx[ri++], 1e-12 * rx.lpNorm<Eigen::Infinity>());
+  for (int i = 0, ri = 0; i < n; ++i) {
+    if (i != pinned) {
+      EXPECT_NEAR(x[i], rx[ri], 1e-12 * rx.lpNorm<Eigen::Infinity>());
+      ++ri;
+    }
+  }
 }
 
 TEST(SparseSpd, RefactorisationWithNewValuesAndNewPattern) {
