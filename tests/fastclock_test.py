@@ -28,7 +28,7 @@ cout << "clock advance " << c1 - c0 << endl;
 """
 CASES = [("sleeve-circular", ["-mesh", "meshes/sleeve-coarse.msh", "-steps", "200"]),
          ("sleeve-radial", ["-steps", "200"])]
-TIMING = ("wall_seconds",)
+TIMING = ("wall_seconds", "backsolve_floor_seconds_per_step", "loop_over_floor")
 
 
 def ff(args, fastclock, **kw):
