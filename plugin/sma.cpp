@@ -36,7 +36,12 @@
 //   long SpdSolve(long handle, real[] b, real[] x)   x = A^-1 b (x resized)
 //   long SpdDelassus(long handle, matrix H, real[] free, real[int,int] W, long normalOnly)
 //       W = H S A^-1 S H', S = diag(free), by blocks of right-hand sides (no dense A^-1 H' kept);
-//       normalOnly: only the even (normal) rows and columns, the others 0.
+//       normalOnly: only the even (normal) rows and columns, the others 0. Keeps H, free and W in
+//       the slot for SpdContactStep.
+//   long SpdContactStep(long handle, real[] rhs, real[int,int] contactTable, real[] tangentFree,
+//                       real[] [omega, tol, maxit, polish], real[] r, real[] u, real[] info)
+//       one condensed contact global step (plugin/core/contact_step.hpp): u_free, the PSOR on W
+//       (r warm start in/out), u = K^-1 (rhs + S H' r); returns the sweep count.
 //   long RoundToFloat(real[] x)   rounds every value to the nearest single-precision float
 //       (IEEE round to nearest even), in place; returns how many values changed.
 //   real SmaPluginVersion()  version stamp, checked by edp/lib/plugin.idp.
@@ -83,6 +88,7 @@
 #include "core/psor.hpp"
 #include "core/psor_full.hpp"
 #include "core/sparse_spd.hpp"
+#include "core/contact_step.hpp"
 #include "core/phase_fraction.hpp"
 #include "core/phase_projection.hpp"
 
@@ -206,17 +212,22 @@ long PsorCondensed(KNM<double>* const& W, KN<double>* const& q, KN<double>* cons
   });
 }
 
-// The factorisations of SpdFactorize, by slot: the glue's only state (the core holds none). They
-// live until the process ends.
-std::vector<std::unique_ptr<sma::SpdFactor>>& Factors() {
-  static std::vector<std::unique_ptr<sma::SpdFactor>> factors;
+// The factorisations of SpdFactorize, by slot, each with the contact problem SpdDelassus formed
+// on it: the glue's only state (the core holds none). They live until the process ends.
+struct FactorSlot {
+  sma::SpdFactor factor;
+  std::unique_ptr<sma::CondensedContact> contact;
+};
+std::vector<std::unique_ptr<FactorSlot>>& Factors() {
+  static std::vector<std::unique_ptr<FactorSlot>> factors;
   return factors;
 }
-sma::SpdFactor& FactorAt(long handle) {
+FactorSlot& SlotAt(long handle) {
   if (handle < 0 || handle >= (long)Factors().size())
     throw std::invalid_argument("no factorisation in slot " + std::to_string(handle) + " (SpdFactorize first)");
   return *Factors()[handle];
 }
+sma::SpdFactor& FactorAt(long handle) { return SlotAt(handle).factor; }
 // A FreeFEM sparse matrix as an Eigen one (its triplets; the FreeFEM matrix is not modified, so
 // that a factorisation FreeFEM keeps of it stays valid).
 sma::SparseMatrix ToEigen(Matrice_Creuse<double>* M) {
@@ -244,10 +255,11 @@ long SpdFactorize(Matrice_Creuse<double>* const& M, long const& handle) {
     const sma::SparseMatrix a = ToEigen(M);
     long slot = handle;
     if (slot < 0) {
-      Factors().push_back(std::make_unique<sma::SpdFactor>());
+      Factors().push_back(std::make_unique<FactorSlot>());
       slot = (long)Factors().size() - 1;
     }
-    FactorAt(slot).factorize(a);
+    SlotAt(slot).factor.factorize(a);
+    SlotAt(slot).contact.reset();  // its W was of the previous matrix
     return slot;
   });
 }
@@ -267,13 +279,54 @@ long SpdSolve(long const& handle, KN<double>* const& b, KN<double>* const& x) {
 long SpdDelassus(long const& handle, Matrice_Creuse<double>* const& H, KN<double>* const& free,
                  KNM<double>* const& W, long const& normalOnly) {
   return guarded("SpdDelassus", [&] {
-    const sma::SparseMatrix h = ToEigen(H);
-    const Eigen::MatrixXd w = sma::delassus(FactorAt(handle), h, cview(free), normalOnly != 0);
+    auto contact = std::make_unique<sma::CondensedContact>();
+    contact->h = ToEigen(H);
+    contact->w = sma::delassus(FactorAt(handle), contact->h, cview(free), normalOnly != 0);
+    contact->free = Eigen::Map<const Eigen::VectorXd>(free->N() ? &(*free)[0] : nullptr, free->N());
+    const Eigen::MatrixXd& w = contact->w;
     const long k = w.rows();
     W->resize(k, k);
     for (long i = 0; i < k; ++i)
       for (long j = 0; j < k; ++j) (*W)(i, j) = w(i, j);
+    SlotAt(handle).contact = std::move(contact);
     return k;
+  });
+}
+
+// One condensed contact global step (plugin/core/contact_step.hpp) on the contact problem
+// SpdDelassus formed in slot `handle`; table: one row per node [vertex, nx, ny, gap, threshold g,
+// t.u previous] (contact.idp's contactTable); settings = [omega, tol, maxit, polish].
+long SpdContactStep(long const& handle, KN<double>* const& rhs, KNM<double>* const& table,
+                    KN<double>* const& tangentFree, KN<double>* const& settings, KN<double>* const& r,
+                    KN<double>* const& u, KN<double>* const& info) {
+  return guarded("SpdContactStep", [&] {
+    FactorSlot& slot = SlotAt(handle);
+    if (!slot.contact) throw std::invalid_argument("no contact problem in slot " + std::to_string(handle) + " (SpdDelassus first)");
+    const long m = table->N(), n = slot.factor.size();
+    if (m > 0 && table->M() != 6) throw std::invalid_argument("the table must have 6 columns");
+    if (settings->N() != 4) throw std::invalid_argument("settings must be [omega, tol, maxit, polish]");
+    if (info->N() != 2) throw std::invalid_argument("info must have 2 entries");
+    if (rhs->N() != n) throw std::invalid_argument("rhs of " + std::to_string(rhs->N()) + " values for " + std::to_string(n) + " dofs");
+    if (r->N() != 2 * m) throw std::invalid_argument("r must have 2 entries per contact node");
+    std::vector<double> gap(m), threshold(m), reference(m);
+    for (long i = 0; i < m; ++i) {
+      gap[i] = (*table)(i, 3L);
+      threshold[i] = (*table)(i, 4L);
+      reference[i] = (*table)(i, 5L);
+    }
+    if (u->N() != n) u->resize(n);
+    sma::ContactStepSettings set;
+    set.omega = (*settings)[0];
+    set.tol = (*settings)[1];
+    set.maxit = (int)(*settings)[2];
+    set.polish = (int)(*settings)[3];
+    Eigen::VectorXd rv = Eigen::Map<const Eigen::VectorXd>(&(*r)[0], 2 * m);
+    const sma::PsorResult res = sma::condensed_global_step(slot.factor, *slot.contact, cview(rhs), gap, threshold,
+                                                           reference, cview(tangentFree), set, rv, view(u));
+    for (long i = 0; i < 2 * m; ++i) (*r)[i] = rv[i];
+    (*info)[0] = res.residual;
+    (*info)[1] = res.converged ? 1 : 0;
+    return (long)res.iterations;
   });
 }
 
@@ -424,6 +477,8 @@ static void Load_Init() {
   Global.Add("SpdSolve", "(", new OneOperator3_<long, long, A, A>(SpdSolve));
   Global.Add("SpdDelassus", "(",
              new OneOperator5_<long, long, Matrice_Creuse<double>*, A, KNM<double>*, long>(SpdDelassus));
+  Global.Add("SpdContactStep", "(",
+             new OneOperator8_<long, long, A, KNM<double>*, A, A, A, A, A>(SpdContactStep));
   Global.Add("AuchmutyLocal", "(", new OneOperator5_<double, A, A, A, A, A>(AuchmutyLocal));
   Global.Add("RoundToFloat", "(", new OneOperator1_<long, A>(RoundToFloat));
   Global.Add("SmaPluginVersion", "(", new OneOperator0<double>(SmaPluginVersion));

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/contact_step.hpp"
 #include "core/sparse_spd.hpp"
 
 namespace {
@@ -171,6 +172,56 @@ TEST(SparseSpd, DelassusEqualsDenseProduct) {
         EXPECT_EQ(wn(i, j), 0.0);
     }
   EXPECT_THROW(sma::delassus(f, SparseMatrix(k, n + 1), free, false), std::invalid_argument);
+}
+
+}  // namespace
+
+namespace {
+
+// One condensed contact global step (plugin/core/contact_step.hpp) on a grid "body" pressed onto
+// an obstacle at 4 nodes: u solves K u = rhs + S H' r, and Signorini holds at every node
+// (r_n >= 0, n.u + gap >= 0, r_n (n.u + gap) = 0 to the PSOR tolerance); frictionless nodes carry
+// no tangential reaction.
+TEST(ContactStep, SolvesTheCondensedProblem) {
+  const SparseMatrix a = grid_laplacian(9, 9, 0.05);
+  const int n = a.rows(), m = 4;
+  std::vector<Eigen::Triplet<double, int>> t;
+  const int nodes[m] = {3, 22, 40, 58};
+  for (int i = 0; i < m; ++i) {
+    t.emplace_back(2 * i, nodes[i], 1.0);          // normal component: the dof itself
+    t.emplace_back(2 * i + 1, nodes[i] + 1, 1.0);  // "tangential": a neighbour dof
+  }
+  sma::CondensedContact c;
+  c.h = SparseMatrix(2 * m, n);
+  c.h.setFromTriplets(t.begin(), t.end());
+  c.free = Eigen::VectorXd::Ones(n);
+  sma::SpdFactor k;
+  k.factorize(a);
+  std::vector<double> free(n, 1.0);
+  c.w = sma::delassus(k, c.h, free, true);
+  // A load pulling every dof down by 1: the free solution penetrates the obstacle (gap 0.5) at
+  // some nodes and not at others (gaps up to 100).
+  std::vector<double> rhs(n, -1.0), gap = {0.5, 100.0, 0.5, 2.0}, threshold(m, 0.0), reference(m, 0.0),
+      tangent_free(m, 1.0), u(n);
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(2 * m);
+  sma::ContactStepSettings set;
+  set.tol = 1e-13;
+  const sma::PsorResult res = sma::condensed_global_step(k, c, rhs, gap, threshold, reference, tangent_free, set, r, u);
+  ASSERT_TRUE(res.converged);
+  const Eigen::Map<Eigen::VectorXd> uu(u.data(), n);
+  const Eigen::VectorXd residual = a * uu - Eigen::Map<Eigen::VectorXd>(rhs.data(), n) - c.h.transpose() * r;
+  EXPECT_LT(residual.norm() / Eigen::Map<Eigen::VectorXd>(rhs.data(), n).norm(), 1e-12);
+  int active = 0;
+  for (int i = 0; i < m; ++i) {
+    const double normal_gap = uu[nodes[i]] + gap[i];
+    EXPECT_GE(r[2 * i], 0.0);
+    EXPECT_GE(normal_gap, -1e-9);
+    EXPECT_LT(std::fabs(r[2 * i] * normal_gap), 1e-9 * (1 + r.lpNorm<Eigen::Infinity>()));
+    EXPECT_EQ(r[2 * i + 1], 0.0);
+    active += r[2 * i] > 0;
+  }
+  EXPECT_GT(active, 0);  // the obstacle pushed somewhere
+  EXPECT_LT(active, m);  // and not everywhere: both statuses are exercised
 }
 
 }  // namespace
