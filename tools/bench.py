@@ -78,13 +78,13 @@ if QUICK:
 PAPER_ITERATIONS = {"fixed_point": 3, "dc": 4, "psor": 10}
 
 
-def run(script, out, *args, allow_failure=False, result="summary.json"):
-    """Runs tools/ff script -out out args; returns (process wall seconds, the JSON file `result` it
-    wrote in out or None, the error message or "")."""
+def run(script, out, *args, allow_failure=False, result="summary.json", env=None):
+    """Runs tools/ff script -out out args (env: variables added to the environment); returns
+    (process wall seconds, the JSON file `result` it wrote in out or None, the error message or "")."""
     os.makedirs(out, exist_ok=True)
     start = time.perf_counter()
     proc = subprocess.run([os.path.join(ROOT, "tools", "ff"), script, "-out", out, *map(str, args)],
-                          cwd=ROOT, capture_output=True, text=True)
+                          cwd=ROOT, capture_output=True, text=True, env=dict(os.environ, **(env or {})))
     wall = time.perf_counter() - start
     if proc.returncode != 0:
         # FreeFEM prints a script's error: line on stdout, its own errors on stderr
@@ -332,6 +332,24 @@ def main():
     results["sleeve_circular_1500_wall_seconds"] = statistics.median(w for w, _ in default_runs)
     results["sleeve_circular_1500_runs"] = [w for w, _ in default_runs]
     results["sleeve_circular_1500_loop_seconds"] = statistics.median(x["wall_seconds"] for _, x in default_runs)
+    results["sleeve_circular_1500_loop_over_floor"] = statistics.median(x["loop_over_floor"] for _, x in default_runs)
+    results["sleeve_circular_1500_floor_seconds_per_step"] = statistics.median(
+        x["backsolve_floor_seconds_per_step"] for _, x in default_runs)
+    # What the ParaView frames cost (-vtkevery 50 by default against only the three instants), and
+    # what the preloaded clock() (plugin/fastclock.c) saves: the same run with FreeFEM's own.
+    variants = {}
+    for name, extra, env in (("no_frames", ["-vtkevery", 0], {}), ("stock_clock", [], {"SMA_FASTCLOCK": "0"})):
+        walls = []
+        for k in range(1 if QUICK else 3):
+            print(f"bench: sleeve-circular default, {name}, run {k + 1}", flush=True)
+            wall, x, _ = run("edp/scenes/sleeve-circular.edp", os.path.join(OUT, f"circular-{name}"), "-quiet", 1,
+                             *extra, env=env)
+            walls.append((wall, x["wall_seconds"]))
+        variants[name] = {"wall_seconds": statistics.median(w for w, _ in walls),
+                          "loop_seconds": statistics.median(l for _, l in walls)}
+    results["sleeve_circular_1500_variants"] = variants
+    frames = os.path.join(OUT, "circular-default", "frames")
+    results["sleeve_circular_1500_frames"] = len(os.listdir(frames)) if os.path.isdir(frames) else 0
     err = curve_error(os.path.join(OUT, "circular-default", "history.csv"), reference)
     results["sleeve_circular_1500_curve_error"] = err["l1_transient"]
     results["sleeve_circular_1500_curve_error_whole_process"] = err["l1"]
@@ -537,9 +555,12 @@ def write_doc(r, plt):
     goal(f"no reversal step, no pressure zigzag for g {min(G_SWEEP)}-{max(G_SWEEP)} W/(m^2 K)",
          ", ".join(f"g {x['g']}: {x.get('reversal_steps')} / {x.get('pressure_zigzag_steps')}" for x in frac_sweep)
          + " (reversal steps / zigzags)", calm)
-    goal("sleeve-circular, 1500 steps, default mesh: <= 10 s",
+    goal("sleeve-circular, 1500 steps, default mesh: whole process <= 1.5 s",
          f"{r['sleeve_circular_1500_wall_seconds']:.2f} s (median of {len(r['sleeve_circular_1500_runs'])}; loop {r['sleeve_circular_1500_loop_seconds']:.2f} s)",
-         r["sleeve_circular_1500_wall_seconds"] <= 10)
+         r["sleeve_circular_1500_wall_seconds"] <= 1.5)
+    goal("its loop <= 1.5 x its floor (one stiffness and one heat back-solve per step)",
+         f"{r['sleeve_circular_1500_loop_over_floor']:.1f} x (floor {1e6 * r['sleeve_circular_1500_floor_seconds_per_step']:.0f} us per step, "
+         f"the plugin's back-solves)", r["sleeve_circular_1500_loop_over_floor"] <= 1.5)
     goal("one DC iteration <= 2 back-solves",
          f"{r['dc_iteration_over_backsolve']:.2f} with contact, {r['dc_iteration_over_backsolve_without_contact']:.2f} without",
          r["dc_iteration_over_backsolve"] <= 2)
@@ -591,6 +612,35 @@ def write_doc(r, plt):
       "(3.5 us here, against 0.1 us for a plain statement), so the scripts' per-step loops are single "
       "statements or array operations; that, the frictionless contact on normal components only and no "
       "Lagrangian record in the scenes halved the default run (7.6 s before this work).")
+    w("")
+    w("## Where the default run's time goes")
+    w("")
+    v = r["sleeve_circular_1500_variants"]
+    w(f"sleeve-circular, default mesh, 1500 steps, medians of {len(r['sleeve_circular_1500_runs'])} runs each, "
+      "whole process (loop):")
+    w("")
+    w("| run | wall (s) | loop (s) |")
+    w("|---|---|---|")
+    w(f"| default (`-vtkevery 50`: {r['sleeve_circular_1500_frames']} ParaView frames) | "
+      f"{r['sleeve_circular_1500_wall_seconds']:.2f} | {r['sleeve_circular_1500_loop_seconds']:.2f} |")
+    w(f"| `-vtkevery 0` (the three instants only) | {v['no_frames']['wall_seconds']:.2f} | {v['no_frames']['loop_seconds']:.2f} |")
+    w(f"| FreeFEM's own clock() (`SMA_FASTCLOCK=0`) | {v['stock_clock']['wall_seconds']:.2f} | {v['stock_clock']['loop_seconds']:.2f} |")
+    w("")
+    w(f"- **The frames** cost {r['sleeve_circular_1500_wall_seconds'] - v['no_frames']['wall_seconds']:+.2f} s "
+      f"of the whole process ({r['sleeve_circular_1500_frames']} VTU files); they stay on by default.")
+    w(f"- **FreeFEM's clock()**: FreeFEM reads the process CPU time, a system call, twice per statement of "
+      f"every block (for a display off by default). tools/ff preloads plugin/fastclock.c, a clock() read "
+      f"through the vDSO: {v['stock_clock']['loop_seconds']:.2f} s -> {r['sleeve_circular_1500_loop_seconds']:.2f} s "
+      f"of loop, outputs byte-identical (tests/fastclock_test.py).")
+    w(f"- **The floor**: one stiffness and one heat back-solve per step, "
+      f"{1e6 * r['sleeve_circular_1500_floor_seconds_per_step']:.0f} us with the plugin's factorisations "
+      f"(summary.json `backsolve_floor_seconds_per_step`); the loop is "
+      f"{r['sleeve_circular_1500_loop_over_floor']:.1f} times steps x floor. The algorithm itself needs more "
+      f"than the floor: {r['iterations_mean_per_step']['dc']:.2f} DC iterations per step (each one or two "
+      f"stiffness back-solves) and {r['iterations_mean_per_step']['fixed_point']:.2f} heat solves, almost all "
+      "of them in the transient's first 161 steps (about 25 DC iterations per step there, one in the "
+      "all-austenite tail); the rest is the interpreter's statements around them (perf: FreeFEM's "
+      "evaluator, and the C++ exception FreeFEM throws at every func's `return`).")
     w("")
     w("## Error metric")
     w("")
