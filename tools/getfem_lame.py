@@ -41,7 +41,6 @@ Usage: tools/getfem_lame.py [--levels "l1 l2"] [--order 1|2] [--geometry straigh
 """
 import argparse
 import json
-import math
 import os
 import sys
 import time
