@@ -344,7 +344,7 @@ def doc_lines(r):
           "GetFEM's nodal contact with rigid obstacle brick differs only by its normal (a finite difference "
           "of the signed distance, about 1e-5 rad off radial): the last column.", ""]
     w += ["Time to a pressure error: the solve time (ms) of the coarsest level whose error is within the "
-          "target (that level in brackets; -: no level of l1-l4 reaches it):", "",
+          f"target (that level in brackets; -: none of {', '.join(x['name'] for x in r['levels'])} reaches it):", "",
           "| error <= | ours P1 | GetFEM P1 | ours / GetFEM | GetFEM P2 straight | GetFEM P2 curved |", "|---|---|---|---|---|---|"]
     t = r["time_to_error"]
     def cell(entry):
