@@ -17,7 +17,8 @@ summary.json with the headline figures) and docs/benchmarks.md with its PNGs in 
      sweeps, and one DC iteration against one back-solve;
   5. PSOR modes full / condensed (plain, with active-set polish) for omega in 1.0 .. 1.95, and
      the polish interval;
-  6. the Lame ring (edp/scenes/ring-lame.edp): pressure error against time per mesh level.
+  6. the Lame ring (edp/scenes/ring-lame.edp): pressure error against time per mesh level;
+  6b. the same against GetFEM on the same meshes (tools/getfem_lame.py: agreement, time to error).
 Usage: tools/bench.py [--quick]   (--quick: a small grid, for checking the script itself)
 """
 import json
@@ -31,6 +32,7 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from curve_error import curve_error  # noqa: E402
+import getfem_lame  # noqa: E402
 from lame import lame_pressure  # noqa: E402
 from plot_sleeve import read_csv, save as save_png  # noqa: E402
 
@@ -441,6 +443,9 @@ def main():
         ok = [r for r in lame_rows if r["mode"] == "condensed" and r["rel_error"] <= target]
         results[f"lame_seconds_to_{target:g}_error"] = min(r["wall_seconds"] for r in ok) if ok else None
 
+    print("bench: ring-lame against GetFEM", flush=True)
+    results["getfem_lame"] = getfem_lame.bench(run, os.path.join(OUT, "getfem-lame"), QUICK)
+
     results["bench_wall_seconds"] = time.perf_counter() - bench_start
     with open(os.path.join(OUT, "summary.json.partial"), "w") as f:
         json.dump(results, f, indent=2, allow_nan=False)  # a NaN fails here, not in a reader
@@ -840,6 +845,8 @@ def write_doc(r, plt):
         t = r.get(f"lame_seconds_to_{target:g}_error")
         w(f"- error <= {target:g}: " + (f"{t:.3f} s (condensed)" if t is not None else "not reached"))
     w("")
+    for line in getfem_lame.doc_lines(r["getfem_lame"]):
+        w(line)
     os.makedirs(os.path.dirname(DOC), exist_ok=True)
     with open(DOC + ".partial", "w") as f:
         f.write("\n".join(lines))
