@@ -5,8 +5,8 @@
 // 126 us per back-solve of the default sleeve's 722 dofs and 518 us at 3458 dofs here; the
 // stiffness and the heat matrices are symmetric positive definite, and a sparse LDL' with a
 // fill-reducing ordering (Eigen's SimplicialLDLT, AMD) solves them in a fraction of that
-// (docs/benchmarks.md, "Back-solves"). The Delassus operator W = H K^-1 H' is formed by blocks of
-// right-hand sides, so that no dense n x m matrix K^-1 H' is ever held: memory n x block + m x m.
+// (docs/benchmarks.md, "Back-solves"). The Delassus operator W = H K^-1 H' is formed from sparse
+// forward solves (delassus()), so that no dense n x m matrix K^-1 H' is ever held.
 //
 // Dirichlet rows marked by a huge diagonal (FreeFEM's tgv) stay in the matrix: an LDL' pivot of
 // 1e30 makes their unknowns b_i / 1e30, as FreeFEM's own solvers do.
@@ -108,6 +108,50 @@ class SpdFactor {
     check_size((std::size_t)b.rows(), "right-hand side block");
     return ldlt_.solve(b);
   }
+  // Y = L^-1 P B for a sparse B (n x c), P A P' = L D L': each column by a sparse forward solve
+  // that visits only the columns of L reachable from the column's nonzeros (their paths up the
+  // elimination tree; L stores each column's rows in increasing order, its first one the parent).
+  // For right-hand sides with a few nonzeros (contact rows) this is far less than a full solve.
+  SparseMatrix forward_solve_sparse(const SparseMatrix& b) const {
+    check_size((std::size_t)b.rows(), "right-hand side block");
+    const SparseMatrix& l = ldlt_.matrixL().nestedExpression();
+    const auto& perm = ldlt_.permutationP().indices();
+    const int n = n_;
+    std::vector<int> parent(n, -1);
+    for (int j = 0; j < n; ++j)
+      if (l.outerIndexPtr()[j + 1] > l.outerIndexPtr()[j]) parent[j] = l.innerIndexPtr()[l.outerIndexPtr()[j]];
+    std::vector<double> x(n, 0.0);
+    std::vector<char> marked(n, 0);
+    std::vector<int> reach;
+    std::vector<Eigen::Triplet<double, int>> y;
+    for (int c = 0; c < b.cols(); ++c) {
+      reach.clear();
+      for (SparseMatrix::InnerIterator it(b, c); it; ++it) {
+        const int row = ldlt_.permutationP().size() ? perm[it.row()] : (int)it.row();
+        x[row] += it.value();
+        for (int j = row; j >= 0 && !marked[j]; j = parent[j]) {
+          marked[j] = 1;
+          reach.push_back(j);
+        }
+      }
+      std::sort(reach.begin(), reach.end());  // parent[j] > j: increasing order is topological
+      for (int j : reach) {
+        const double xj = x[j];
+        if (xj == 0.0) continue;
+        for (SparseMatrix::InnerIterator it(l, j); it; ++it) x[it.row()] -= it.value() * xj;
+      }
+      for (int j : reach) {
+        if (x[j] != 0.0) y.emplace_back(j, c, x[j]);
+        x[j] = 0.0;
+        marked[j] = 0;
+      }
+    }
+    SparseMatrix result(n, b.cols());
+    result.setFromTriplets(y.begin(), y.end());
+    return result;
+  }
+  // D of P A P' = L D L'.
+  Eigen::VectorXd diagonal() const { return ldlt_.vectorD(); }
   // Nonzeros of the factor L (memory: about 12 bytes each).
   long factor_nonzeros() const { return n_ ? (long)ldlt_.matrixL().nestedExpression().nonZeros() : 0; }
 
@@ -127,9 +171,10 @@ class SpdFactor {
 // The Delassus operator W = H S A^-1 S H' (k x k) of the contact rows H (k x n), S = diag(free)
 // zeroing the supported (Dirichlet) dofs. normal_only: only the even rows of H (the normal
 // components of interleaved (n, t) pairs) are formed; the odd rows and columns of W are 0.
-// Right-hand sides go by blocks of `block` columns: memory n x block, never n x k.
+// With P A P' = L D L' and Y = L^-1 P S H' (sparse forward solves: SpdFactor::forward_solve_sparse),
+// W = Y' D^-1 Y: no backward solve, no dense n x k matrix; memory is that of the sparse Y.
 inline Eigen::MatrixXd delassus(const SpdFactor& a, const SparseMatrix& h, span<const double> free,
-                                bool normal_only, int block = 64) {
+                                bool normal_only) {
   const int n = a.size(), k = (int)h.rows();
   if (h.cols() != n)
     throw std::invalid_argument("H has " + std::to_string(h.cols()) + " columns for a " + std::to_string(n) +
@@ -139,23 +184,23 @@ inline Eigen::MatrixXd delassus(const SpdFactor& a, const SparseMatrix& h, span<
                                 " dofs");
   if (normal_only && k % 2 != 0) throw std::invalid_argument("normal_only needs (n, t) pairs of rows");
   Eigen::Map<const Eigen::VectorXd> mask(free.begin(), n);
-  const SparseMatrix ht = h.transpose();  // column r of ht: row r of H
   std::vector<int> wanted;
   for (int r = 0; r < k; r += normal_only ? 2 : 1) wanted.push_back(r);
+  // The wanted rows of H, masked, as the columns of B = S H_wanted'.
+  const SparseMatrix ht = h.transpose();
+  std::vector<Eigen::Triplet<double, int>> t;
+  for (std::size_t c = 0; c < wanted.size(); ++c)
+    for (SparseMatrix::InnerIterator it(ht, wanted[c]); it; ++it)
+      if (mask[it.row()] != 0.0) t.emplace_back((int)it.row(), (int)c, it.value() * mask[it.row()]);
+  SparseMatrix b(n, (int)wanted.size());
+  b.setFromTriplets(t.begin(), t.end());
+  const SparseMatrix y = a.forward_solve_sparse(b);
+  const Eigen::VectorXd dinv = a.diagonal().cwiseInverse();
+  const SparseMatrix scaled = dinv.asDiagonal() * y;
+  const Eigen::MatrixXd compact = Eigen::MatrixXd(SparseMatrix(y.transpose() * scaled));
   Eigen::MatrixXd w = Eigen::MatrixXd::Zero(k, k);
-  for (std::size_t first = 0; first < wanted.size(); first += block) {
-    const int cols = (int)std::min<std::size_t>(block, wanted.size() - first);
-    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n, cols);
-    for (int c = 0; c < cols; ++c)
-      for (SparseMatrix::InnerIterator it(ht, wanted[first + c]); it; ++it) rhs(it.row(), c) = it.value();
-    rhs = mask.asDiagonal() * rhs;
-    Eigen::MatrixXd x = a.solve(rhs);
-    x = mask.asDiagonal() * x;
-    const Eigen::MatrixXd hx = h * x;  // k x cols
-    for (int c = 0; c < cols; ++c) w.col(wanted[first + c]) = hx.col(c);
-  }
-  if (normal_only)
-    for (int r = 1; r < k; r += 2) w.row(r).setZero();
+  for (std::size_t i = 0; i < wanted.size(); ++i)
+    for (std::size_t j = 0; j < wanted.size(); ++j) w(wanted[i], wanted[j]) = compact(i, j);
   return w;
 }
 
