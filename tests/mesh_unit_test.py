@@ -143,7 +143,7 @@ def main():
         fine = os.path.join(tmp, "sleeve-nr108-m.msh")
         gmsh("ring.geo", fine, "-setnumber", "nr", "108")
         code, error = scene(os.path.join(tmp, "run-fine-m"), fine)
-        m = re.search(r"has area (\S+) < 1e-8 \(mean \S+, quality (\S+)\).*write the mesh in millimetres", error)
+        m = re.search(r"has area (\S+) < 1e-8 \(mean \S+, quality (\S+)\).*well shaped.*write it in millimetres", error)
         check(code != 0 and m is not None and float(m.group(2)) > 0.5,
               f"108 layers in metres: the floor named with the advice to write millimetres (exit {code}): {error}")
         result["fine_metres_message"] = error
