@@ -56,13 +56,23 @@ sleeve_opt_half-coarse := $(sleeve_opt_coarse) -setnumber half 1
 sleeve_opt_half := $(sleeve_opt_quarter) -setnumber half 1
 # The refinement levels of the quarter ring (nr 6 and 18 are sleeve-coarse, sleeve-quarter; 9 and
 # 12 are used by tests/sleeve_convergence_test.py, 27 and 36 by the benchmarks only; -aniso36 is
-# sleeve-aniso with twice its layers).
-BENCH_MESHES := meshes/sleeve-nr27.msh meshes/sleeve-nr36.msh meshes/sleeve-aniso36.msh
+# sleeve-aniso with twice its layers). nr 72, 108 and 140 (26k, 59k and 99k nodes) extend the
+# scaling series of the benchmarks (tools/bench_scaling.py: 18, 36, 72, 108, 140 layers); made by
+# make bench only.
+BENCH_MESHES := meshes/sleeve-nr27.msh meshes/sleeve-nr36.msh meshes/sleeve-aniso36.msh \
+                meshes/sleeve-nr72.msh meshes/sleeve-nr108.msh meshes/sleeve-nr140.msh
+# Meshes written in millimetres, with a $$MeshUnit section saying so (docs/parameters.md, Mesh
+# units): in metres the triangles of nr 108 and 140 fall below gmshload's floor of 1e-8 (area, in
+# the file's units; nr 72 is just above it), and edp/lib/mesh.idp LoadMesh scales them back.
+MILLIMETRE_MESHES := meshes/sleeve-nr72.msh meshes/sleeve-nr108.msh meshes/sleeve-nr140.msh
 sleeve_opt_nr9 := $(SLEEVE_RING) -setnumber nr 9
 sleeve_opt_nr12 := $(SLEEVE_RING) -setnumber nr 12
 sleeve_opt_nr27 := $(SLEEVE_RING) -setnumber nr 27
 sleeve_opt_nr36 := $(SLEEVE_RING) -setnumber nr 36
 sleeve_opt_aniso36 := $(SLEEVE_RING) -setnumber nr 36 -setnumber nt 18
+sleeve_opt_nr72 := $(SLEEVE_RING) -setnumber nr 72
+sleeve_opt_nr108 := $(SLEEVE_RING) -setnumber nr 108
+sleeve_opt_nr140 := $(SLEEVE_RING) -setnumber nr 140
 sliver_opt_thin := $(SLEEVE_RING) -setnumber eps 1.3e-5
 sliver_opt_degenerate := $(SLEEVE_RING) -setnumber eps 1e-8
 
@@ -86,8 +96,14 @@ $(PLUGIN): $(PLUGIN_SOURCES)
 	@echo "built $(PLUGIN)"
 
 meshes: deps $(MESHES)
+# A mesh of MILLIMETRE_MESHES: gmsh scales the coordinates by 1000 as it writes them, and the
+# $$MeshUnit section (0.001 m per unit) goes in after $$EndMeshFormat, all in a .part file renamed
+# when complete (a mesh in mm without its section would be read as metres).
 define gmsh_mesh
-	@gmsh -2 -format msh22 $($(1)_opt_$*) $< -o $@ > $@.log 2>&1 \
+	@$(if $(filter $@,$(MILLIMETRE_MESHES)),\
+	  gmsh -2 -format msh22 $($(1)_opt_$*) -setnumber Mesh.ScalingFactor 1000 $< -o $@.part > $@.log 2>&1 \
+	  && sed -i '/^\$$EndMeshFormat/a $$MeshUnit\n0.001\n$$EndMeshUnit' $@.part && mv $@.part $@,\
+	  gmsh -2 -format msh22 $($(1)_opt_$*) $< -o $@ > $@.log 2>&1) \
 	  || { cat $@.log; echo "error: gmsh failed on $<" >&2; exit 1; }
 	@rm -f $@.log
 endef

@@ -18,7 +18,9 @@ summary.json with the headline figures) and docs/benchmarks.md with its PNGs in 
   5. PSOR modes full / condensed (plain, with active-set polish) for omega in 1.0 .. 1.95, and
      the polish interval;
   6. the Lame ring (edp/scenes/ring-lame.edp): pressure error against time per mesh level;
-  6b. the same against GetFEM on the same meshes (tools/getfem_lame.py: agreement, time to error).
+  6b. the same against GetFEM on the same meshes (tools/getfem_lame.py: agreement, time to error);
+  7. the cost against the mesh size (tools/bench_scaling.py, issue 16): sleeve-circular from 1 729
+     to 98 841 nodes, ms per step and per DC iteration, peak memory, setup, their exponents.
 Usage: tools/bench.py [--quick]   (--quick: a small grid, for checking the script itself)
 """
 import json
@@ -31,6 +33,7 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import bench_scaling  # noqa: E402
 from curve_error import curve_error  # noqa: E402
 import getfem_lame  # noqa: E402
 from lame import lame_pressure  # noqa: E402
@@ -446,6 +449,9 @@ def main():
     print("bench: ring-lame against GetFEM", flush=True)
     results["getfem_lame"] = getfem_lame.bench(run, os.path.join(OUT, "getfem-lame"), QUICK)
 
+    # ---- 7. Cost against the mesh size ----
+    results["scaling"] = bench_scaling.scaling(OUT, QUICK)
+
     results["bench_wall_seconds"] = time.perf_counter() - bench_start
     with open(os.path.join(OUT, "summary.json.partial"), "w") as f:
         json.dump(results, f, indent=2, allow_nan=False)  # a NaN fails here, not in a reader
@@ -590,6 +596,8 @@ def write_doc(r, plt):
          f"{it['fixed_point']:.2f} / {it['dc']:.2f} / {it['psor']:.1f} (friction scene: {itf['fixed_point']:.2f} / {itf['dc']:.2f} / {itf['psor']:.1f})",
          it["fixed_point"] <= 3 and it["dc"] <= 4 and it["psor"] <= 10 and itf["fixed_point"] <= 3
          and itf["dc"] <= 4 and itf["psor"] <= 10)
+    for text, value, ok in bench_scaling.goals(r["scaling"]):
+        goal(text, value, ok)
     w("")
     w("## Reading the numbers")
     w("")
@@ -769,6 +777,7 @@ def write_doc(r, plt):
     for c in r["cost_per_step"]:
         w(f"| {c['nodes']} | {1e3 * c['seconds']:.3f} |")
     w("")
+    lines.extend(bench_scaling.section(r["scaling"], plt, save))
     w("## Iteration counts per time step")
     w("")
     w("| loop | paper | sleeve-circular (mean / max) | sleeve-elliptic-friction (mean) |")
