@@ -1,0 +1,442 @@
+#!/usr/bin/python3
+"""The radial sleeve model (edp/scenes/sleeve-radial.edp) computed again in numpy, from its
+equations: an independent implementation of the same scheme, to check sleeve-radial against and to
+time it against (tools/bench.py, "sleeve-radial against numpy"; tests/radial_numpy_test.py).
+
+    tools/radial_numpy.py [-nr 160] [-steps 1000] [-out DIR] [-name value ...]
+
+Same options, defaults and meanings as the scene (the subset of the radial model: -nr -steps
+-tend -dt -theta -rannacher -dctol -dcmaxit -fptol -fpmaxit -E -nu -rho -a -latent -T0 -Tc -C0 -k
+-g -gcontact -gpipe -Text -Tpipe -Tinit -plane -pipeA -Ri -thickness -interference -keepgoing;
+-phasemodel fraction only). Writes DIR/history.csv (one row per step: t, T_inner_mean,
+T_min, T_max, fraction_austenite, fraction_m1, fraction_m2, contact_nodes, pressure_mean,
+fixed_point_iterations, dc_iterations, u_inner, reaction_per_radian; full double precision) and
+DIR/summary.json (the scene's key figures and loop_seconds, the time loop alone), default DIR
+results/radial-numpy.
+
+The scheme (docs/model.md; the header of edp/problems/sleeve/radial.idp), per radian, SI units:
+  mesh      nr equal P1 elements on [Ri, Ri + Hr]; one phase point per element (its midpoint),
+            weight area_e = (b^2 - a^2) / 2.
+  K         int (lambda tr e(u) tr e(v) + 2 mu (u'v' + u v / r^2)) r dr, 5-point Gauss per
+            element; tridiagonal SPD, LDL' factorised once (LAPACK pttrf).
+  B         (B s)_i = r_i (s_{i-1} - s_i) (s = 0 outside), so tr e = (B' u) / area exactly.
+  contact   one unknown: u_0 + (Ri - Rp) >= 0, reaction R >= 0, complementarity; solved exactly:
+            u_free = K^-1 B s, R = max(0, -(u_free_0 + Ri - Rp) / W), u = u_free + R K^-1 e_0,
+            W = (K^-1 e_0)_0.
+  law       alpha = rho a (Tc - T)+, c = rho L / T0 (T - T0) at the midpoints, T_mid the mean of
+            the element's two nodes; the fraction local step (plugin/core/phase_fraction.hpp):
+            D = (rho a [alpha > 0] |t| + rho L / T0) kappa, q = alpha^2 / (lambda + 2 mu),
+            lower = (D b + alpha |t| - c) / (D + q), upper = lower + q / (D + q),
+            |chi| = clamp(clamp(held, lower, upper), 0, 1), sign(chi) = sign(t) (t = 0: the
+            previous sign), held = |chi_start| if chi_start has that sign else 0; s = alpha chi.
+            kappa = rho L Interp(Q 1 ./ M) (= L / C0 up to round-off).
+  DC loop   s = alpha chi; repeat: global step (contact), trace, local step; stop when no point
+            changed or (from the second iteration) |u_new - u| <= dctol |u_new|.
+  heat      lumped capacity M_i = rho C0 int phi_i r dr, conduction k r_mid / h per element,
+            Robin exchange g l_i on the two surface nodes (l = Ri, Ro); the theta-method
+            (M/dt + theta (Kt + G1)) T1 = (M/dt - (1-theta)(Kt + G0)) T0
+                                          + theta G1 Text1 + (1-theta) G0 Text0 + S,
+            theta = 1 for the first -rannacher steps, LDL' refactorised when theta or the inner
+            coefficient changes; inner g = -gcontact if the reaction was > 0 at the end of the
+            previous step, else -gpipe; inner outside temperature -Tpipe.
+  latent    S = rho L / dt Q (b - b_start) (the step's whole latent heat), Q_ie = int phi_i r dr
+            over element e; b_start the fractions the previous step's last heat solve used.
+  fixed pt  per step, iteration r: S from b, heat step, alpha, c, DC loop, b_new = |chi|; stop
+            when b_new == b exactly or (r >= 2) |T - T_prev| <= fptol |T|; otherwise
+            Anderson(1) mixing of b <- b_new (from r = 2: b = b_new - gamma (b_new - b_new_prev),
+            gamma = argmin |F - gamma (F - F_prev)|, F = b_new - b), clamped to [0, 1].
+Vectorised over the points and nodes; Python loops only where the algorithm iterates (steps,
+fixed point, DC loop).
+"""
+import json
+import math
+import os
+import sys
+import time
+
+import numpy as np
+from scipy.linalg import lapack
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+# The radial scene's options and defaults (edp/problems/sleeve/parameters.idp, sleeve-radial.edp).
+DEFAULTS = {
+    "nr": 160, "steps": 1000, "tend": 150.0, "dt": 0.0, "theta": 0.5, "rannacher": 2,
+    "dctol": 1e-3, "dcmaxit": 100, "fptol": 1e-8, "fpmaxit": 200,
+    "E": 85e9, "nu": 0.3, "rho": 7900.0, "a": 300.0, "latent": 3000.0, "T0": 210.0, "Tc": 280.0,
+    "C0": 837.0, "k": 18.0, "g": 500.0, "gcontact": None, "gpipe": None, "Text": 293.15,
+    "Tpipe": None, "Tinit": 196.0, "plane": "strain", "pipeA": None, "Ri": 0.0, "thickness": 0.0,
+    "interference": 0.0, "phasemodel": "fraction", "keepgoing": 0,
+    "out": os.path.join(ROOT, "results", "radial-numpy"),
+}
+HISTORY_COLUMNS = ["t", "T_inner_mean", "T_min", "T_max", "fraction_austenite", "fraction_m1", "fraction_m2",
+                   "contact_nodes", "pressure_mean", "fixed_point_iterations", "dc_iterations", "u_inner",
+                   "reaction_per_radian"]
+INTEGER_COLUMNS = {"contact_nodes", "fixed_point_iterations", "dc_iterations"}
+INTEGER_OPTIONS = {"nr", "steps", "rannacher", "dcmaxit", "fpmaxit", "keepgoing"}
+STRING_OPTIONS = {"plane", "phasemodel", "out"}
+
+
+def fail(message):
+    print(f"error: radial_numpy: {message}", file=sys.stderr)
+    sys.exit(2)
+
+
+def geometry():
+    """Ri, Hr and the pipe radius from meshes/sleeve-geometry.txt (the scene's source too)."""
+    values = {}
+    with open(os.path.join(ROOT, "meshes", "sleeve-geometry.txt")) as f:
+        for line in f:
+            if line.strip() and not line.startswith("#"):
+                key, value = line.split()
+                values[key] = float(value)
+    return values
+
+
+def parse(argv):
+    """-name value pairs over DEFAULTS; an unknown name or a bad value fails naming it."""
+    p = dict(DEFAULTS)
+    if len(argv) % 2:
+        fail(f"options come in -name value pairs: {' '.join(argv)}")
+    for name, value in zip(argv[::2], argv[1::2]):
+        key = name[1:] if name.startswith("-") else None
+        if key not in DEFAULTS:
+            fail(f"unknown option {name} (options: {' '.join('-' + k for k in DEFAULTS)})")
+        try:
+            p[key] = value if key in STRING_OPTIONS else int(value) if key in INTEGER_OPTIONS else float(value)
+        except ValueError:
+            fail(f"{name} {value!r} is not a{'n integer' if key in INTEGER_OPTIONS else ' number'}")
+    geo = geometry()
+    for key, fallback in (("gcontact", p["g"]), ("gpipe", p["g"]), ("Tpipe", p["Text"]), ("pipeA", geo["pipe"])):
+        if p[key] is None:
+            p[key] = fallback
+    if p["interference"] > 0:
+        p["Ri"] = p["pipeA"] - p["interference"]
+    p["Ri"] = p["Ri"] or geo["Ri"]
+    p["thickness"] = p["thickness"] or geo["Hr"]
+    if p["dt"] > 0:
+        p["steps"] = int(round(p["tend"] / p["dt"]))
+    checks = [("nr", p["nr"] >= 1, "must be >= 1"), ("steps", p["steps"] >= 1, "must be >= 1"),
+              ("theta", 0 <= p["theta"] <= 1, "must be in [0, 1]"), ("rannacher", p["rannacher"] >= 0, "must be >= 0"),
+              ("dctol", p["dctol"] > 0, "must be > 0"), ("dcmaxit", p["dcmaxit"] >= 1, "must be >= 1"),
+              ("fptol", p["fptol"] >= 0, "must be >= 0"), ("fpmaxit", p["fpmaxit"] >= 1, "must be >= 1"),
+              ("C0", p["C0"] > 0, "must be > 0"), ("k", p["k"] >= 0, "must be >= 0"),
+              ("Tinit", 0 < p["Tinit"] < p["T0"], "must be in (0, T0)"),
+              ("plane", p["plane"] in ("strain", "stress"), "must be strain or stress"),
+              ("phasemodel", p["phasemodel"] == "fraction", "must be fraction (the only model here)"),
+              ("nu", -1 < p["nu"] < 0.5, "must be in (-1, 0.5)"), ("E", p["E"] > 0, "must be > 0"),
+              ("Ri", p["Ri"] > 0, "must be > 0"), ("thickness", p["thickness"] > 0, "must be > 0")]
+    for key, ok, why in checks:
+        if not ok:
+            fail(f"-{key} {p[key]} {why}")
+    return p
+
+
+def tridiagonal_factor(diagonal, off):
+    """LDL' of the SPD tridiagonal matrix (diagonal, off); fails on a non-positive pivot."""
+    d, e, info = lapack.dpttrf(diagonal, off)
+    if info != 0:
+        raise ArithmeticError(f"tridiagonal factorisation failed (LAPACK dpttrf info {info})")
+    return d, e
+
+
+def run(p):
+    """The whole run; returns (history columns, summary dict)."""
+    nr, steps = p["nr"], p["steps"]
+    dt = p["tend"] / steps
+    shear = p["E"] / (2 * (1 + p["nu"]))
+    lam = p["E"] * p["nu"] / ((1 + p["nu"]) * (1 - 2 * p["nu"]))
+    if p["plane"] == "stress":
+        lam = 2 * lam * shear / (lam + 2 * shear)
+    rho, a_law, L, T0, Tc = p["rho"], p["a"], p["latent"], p["T0"], p["Tc"]
+    rhoa, rhoL = rho * a_law, rho * L
+    laminate = lam + 2 * shear
+
+    # ---- Mesh and mechanics ----
+    r = p["Ri"] + p["thickness"] * np.arange(nr + 1) / nr
+    a, b = r[:-1], r[1:]
+    h = b - a
+    area = (b * b - a * a) / 2
+    total_area = area.sum()
+    gx = np.array([-0.9061798459386640, -0.5384693101056831, 0., 0.5384693101056831, 0.9061798459386640])
+    gw = np.array([0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
+                   0.2369268850561891])
+    rq = (a + b)[:, None] / 2 + gx[None, :] * h[:, None] / 2      # elements x Gauss points
+    wq = gw[None, :] * h[:, None] / 2 * rq                         # weight r dr
+    Na, Nb = (b[:, None] - rq) / h[:, None], (rq - a[:, None]) / h[:, None]
+    dNa, dNb = -1 / h[:, None], 1 / h[:, None]
+    ta, tb = dNa + Na / rq, dNb + Nb / rq                          # tr e of each shape function
+    kaa = (wq * (lam * ta * ta + 2 * shear * (dNa * dNa + Na * Na / rq ** 2))).sum(axis=1)
+    kab = (wq * (lam * ta * tb + 2 * shear * (dNa * dNb + Na * Nb / rq ** 2))).sum(axis=1)
+    kbb = (wq * (lam * tb * tb + 2 * shear * (dNb * dNb + Nb * Nb / rq ** 2))).sum(axis=1)
+    K_diag = np.zeros(nr + 1)
+    K_diag[:-1] += kaa
+    K_diag[1:] += kbb
+    K_d, K_e = tridiagonal_factor(K_diag, kab)
+    solve_K = lapack.dpttrs
+    e0 = np.zeros(nr + 1)
+    e0[0] = 1
+    G_contact, _ = solve_K(K_d, K_e, e0)      # K^-1 e_0: the inner node's response to its reaction
+    W = G_contact[0]
+    gap0 = r[0] - p["pipeA"]
+    r_left, r_right = -r[:-1], r[1:]           # B: element e acts on nodes e (-r_e) and e+1 (r_e+1)
+    trace_left, trace_right = r_left / area, r_right / area   # tr e = (B' u) / area per element
+    # Lame's shrink-fit pressure of the interference (the all-austenite end state, for the summary).
+    lame_C = -gap0 / (shear * r[0] / ((lam + shear) * r[-1] ** 2) + 1 / r[0])
+    lame = 2 * shear * lame_C * (1 / r[0] ** 2 - 1 / r[-1] ** 2)
+
+    # ---- Heat ----
+    w_first, w_second = h * (2 * a + b) / 6, h * (a + 2 * b) / 6   # int phi r dr of the element's nodes
+    capacity = np.zeros(nr + 1)
+    capacity[:-1] += p["rho"] * p["C0"] * w_first
+    capacity[1:] += p["rho"] * p["C0"] * w_second
+    ke = p["k"] * (a + b) / 2 / h
+    Kt_diag = np.zeros(nr + 1)
+    Kt_diag[:-1] += ke
+    Kt_diag[1:] += ke
+    exchange_length = np.zeros(nr + 1)
+    exchange_length[0], exchange_length[-1] = r[0], r[-1]
+    nodal_one = np.zeros(nr + 1)
+    nodal_one[:-1] += w_first
+    nodal_one[1:] += w_second
+    nodal_ratio = nodal_one / capacity
+    kappa = rhoL * 0.5 * (nodal_ratio[:-1] + nodal_ratio[1:])   # = L / C0 per unit fraction
+    # Per point, the parts of D that do not change: D = (rho a [alpha > 0] |t| + rho L / T0) kappa.
+    D_latent = rhoL / T0 * kappa
+    D_slope = rhoa * kappa
+    latent_first, latent_second = rhoL / dt * w_first, rhoL / dt * w_second
+    rc_T0 = rhoL / T0
+
+    def heat_lhs(theta, g_inner):
+        g = exchange_length * p["g"]
+        g[0] = exchange_length[0] * g_inner
+        return tridiagonal_factor(capacity / dt + theta * g + theta * Kt_diag, -theta * ke)
+
+    # ---- State ----
+    T = np.full(nr + 1, p["Tinit"])
+    u = np.zeros(nr + 1)
+    chi = np.zeros(nr)
+    b_start = np.zeros(nr)            # the fractions the last heat solve accounted for
+    reaction = 0.0
+    Text_node = np.full(nr + 1, p["Text"])
+    Text_node[0] = p["Tpipe"]
+    g_prev = np.full(nr + 1, p["g"])
+    g_prev[0] = p["gpipe"]
+    factor_key, H_d, H_e = None, None, None
+    dctol, dcmaxit, fptol, fpmaxit = p["dctol"], p["dcmaxit"], p["fptol"], p["fpmaxit"]
+    keep_going = bool(p["keepgoing"])
+    unconverged = 0
+
+    cols = {k: np.zeros(steps) for k in HISTORY_COLUMNS}
+    heat_balance_max = 0.0
+    reverted = np.zeros(nr, dtype=bool)
+    reversal_steps = 0
+    zig = [0.0, 0.0, 0.0, 0.0]  # p_prev, dp_prev, dp_prev2, max |p|
+    zigzag_steps = 0
+    loop_start = time.perf_counter()
+    for n in range(steps):
+        theta = 1.0 if n < p["rannacher"] else p["theta"]
+        # Boundary data: the start of the step is the end of the last one; the inner surface's
+        # coefficient at the end from the contact status at the end of the last step.
+        g_now = np.full(nr + 1, p["g"])
+        g_now[0] = p["gcontact"] if reaction > 0 else p["gpipe"]
+        G0 = g_prev * exchange_length
+        G1 = g_now * exchange_length
+        key = (theta, g_now[0])
+        if key != factor_key:
+            H_d, H_e = heat_lhs(theta, g_now[0])
+            factor_key = key
+        # The right side without the latent load (the same for every fixed-point iteration).
+        KtT = Kt_diag * T
+        KtT[:-1] -= ke * T[1:]
+        KtT[1:] -= ke * T[:-1]
+        rhs_base = capacity * T / dt - (1 - theta) * (KtT + G0 * T) + (1 - theta) * G0 * Text_node \
+            + theta * G1 * Text_node
+        chi_start = chi.copy()
+        b_seen = np.abs(chi)
+        T_prev = T
+        last_F = last_G = None
+        dc_total = 0
+        fp_its = 0
+        converged_fp = False
+        while not converged_fp and fp_its < fpmaxit:
+            fp_its += 1
+            db_load = b_seen - b_start
+            rhs = rhs_base.copy()
+            rhs[:-1] += latent_first * db_load
+            rhs[1:] += latent_second * db_load
+            T1, info = lapack.dpttrs(H_d, H_e, rhs)
+            # Law at the midpoints, and the local step's coefficients of this iterate.
+            Tq = 0.5 * (T1[:-1] + T1[1:])
+            alpha = np.maximum(rhoa * (Tc - Tq), 0.0)
+            c = rc_T0 * (Tq - T0)
+            D_slope_now = np.where(alpha > 0, D_slope, 0.0)
+            q_lam = alpha * alpha / laminate
+            num_t = D_slope_now * b_seen + alpha        # numerator: |t| num_t + num_0
+            num_0 = D_latent * b_seen - c
+            den_0 = D_latent + q_lam                    # denominator: |t| D_slope_now + den_0
+            # ---- DC loop ----
+            s = alpha * chi
+            it = 0
+            converged_dc = False
+            while not converged_dc and it < dcmaxit:
+                rhs_u = np.empty(nr + 1)
+                np.multiply(r_left, s, out=rhs_u[:-1])
+                rhs_u[-1] = 0.0
+                rhs_u[1:] += r_right * s
+                u_new, info = solve_K(K_d, K_e, rhs_u)
+                free_gap = -(u_new[0] + gap0)
+                reaction = free_gap / W if free_gap > 0 else 0.0
+                if reaction > 0:
+                    u_new += reaction * G_contact
+                du = u_new - u
+                unorm = math.sqrt(u_new.dot(u_new))
+                change = math.sqrt(du.dot(du))
+                rel = change / unorm if unorm > 0 else change
+                trace = trace_right * u_new[1:]
+                trace += trace_left * u_new[:-1]
+                # Local step (vectorised plugin/core/phase_fraction.hpp project_fraction).
+                at = np.abs(trace)
+                sign = np.copysign(1.0, trace)
+                if not at.all():
+                    zero = at == 0
+                    sign[zero] = np.where(chi[zero] < 0, -1.0, 1.0)
+                held = np.maximum(chi_start * sign, 0.0)
+                den = at * D_slope_now + den_0
+                lower = (at * num_t + num_0) / den
+                upper = lower + q_lam / den
+                fraction = np.maximum(lower, held)
+                np.minimum(fraction, upper, out=fraction)
+                np.maximum(fraction, 0.0, out=fraction)   # (ufuncs: np.clip costs 10 us a call)
+                np.minimum(fraction, 1.0, out=fraction)
+                chi_new = sign * fraction
+                changed = np.count_nonzero(chi_new != chi)
+                chi = chi_new
+                s = alpha * chi
+                u = u_new
+                converged_dc = changed == 0 or (it >= 1 and rel <= dctol)
+                it += 1
+            if not converged_dc:
+                msg = (f"DC loop did not converge: {it} iterations, relative displacement change {rel} > "
+                       f"tol {dctol} (step {n + 1})")
+                if not keep_going:
+                    raise RuntimeError(msg)
+                unconverged += 1
+            dc_total += it
+            b_new = np.abs(chi)
+            db = b_new - b_seen
+            dT = T1 - T_prev
+            fp_residual = math.sqrt(dT.dot(dT)) / math.sqrt(T1.dot(T1))
+            converged_fp = not db.any() or (fp_its >= 2 and fp_residual <= fptol)
+            T_prev = T1
+            b_used = b_seen
+            if not converged_fp:
+                # Anderson mixing of depth 1 (a secant step on the fractions), clamped to [0, 1].
+                b_seen = b_new
+                if fp_its >= 2:
+                    dF = db - last_F
+                    dFF = dF.dot(dF)
+                    if dFF > 0:
+                        b_seen = b_new - (dF.dot(db) / dFF) * (b_new - last_G)
+                    b_seen = np.minimum(np.maximum(b_seen, 0.0), 1.0)
+                last_F, last_G = db, b_new
+        if not converged_fp:
+            msg = (f"DCT fixed point did not converge: {fp_its} iterations, relative change of T "
+                   f"{fp_residual} > tol {fptol} (step {n + 1})")
+            if not keep_going:
+                raise RuntimeError(msg)
+            unconverged += 1
+        # The step's heat balance: stored = entered through the boundary + latent released.
+        S_sum = rhoL / dt * (w_first.dot(b_used - b_start) + w_second.dot(b_used - b_start))
+        boundary = dt * (theta * G1.dot(Text_node - T1) + (1 - theta) * G0.dot(Text_node - T))
+        stored = capacity.dot(T1 - T)
+        budget = boundary + dt * S_sum
+        scale = max(abs(stored), abs(boundary) + abs(dt * S_sum))
+        if scale > 0:
+            heat_balance_max = max(heat_balance_max, abs(stored - budget) / scale)
+        b_start = b_seen   # (= b_used once converged; -keepgoing: the mixed next guess, as dct.idp)
+        T = T1
+        g_prev = g_now
+        # Chatter watch (edp/solvers/dct.idp ChatterStep): reversals and pressure zigzags.
+        grow = np.abs(chi) - np.abs(chi_start)
+        reversal_steps += bool(np.any((grow > 1e-9) & reverted))
+        reverted |= grow < -1e-9
+        pressure = reaction / r[0]
+        dp = pressure - zig[0]
+        zig[3] = max(zig[3], abs(pressure))
+        floor = 1e-6 * zig[3]
+        zigzag_steps += (dp * zig[1] < 0 and zig[1] * zig[2] < 0 and abs(dp) > floor and abs(zig[1]) > floor
+                         and abs(zig[2]) > floor)
+        zig[:3] = [pressure, dp, zig[1]]
+        latent = np.abs(chi)
+        cols["t"][n] = (n + 1) * dt
+        cols["T_inner_mean"][n] = T[0]
+        cols["T_min"][n] = T.min()
+        cols["T_max"][n] = T.max()
+        cols["fraction_m1"][n] = 0.5 * area.dot(chi + latent) / total_area
+        cols["fraction_m2"][n] = 0.5 * area.dot(latent - chi) / total_area
+        cols["fraction_austenite"][n] = 1.0 - area.dot(latent) / total_area
+        cols["contact_nodes"][n] = reaction > 0
+        cols["pressure_mean"][n] = pressure
+        cols["fixed_point_iterations"][n] = fp_its
+        cols["dc_iterations"][n] = dc_total
+        cols["u_inner"][n] = u[0]
+        cols["reaction_per_radian"][n] = reaction
+    loop_seconds = time.perf_counter() - loop_start
+
+    fa = cols["fraction_austenite"]
+    in_contact = np.flatnonzero(cols["contact_nodes"] > 0)
+    not_austenite = np.flatnonzero(fa < 1)
+    austenite_step = int(not_austenite[-1]) + 2 if not_austenite.size and not_austenite[-1] + 1 < steps else \
+        (1 if not not_austenite.size else -1)
+    summary = {
+        "scene": "sleeve-radial (numpy, tools/radial_numpy.py)",
+        "parameters": {k: v for k, v in p.items() if k != "out"},
+        "nr": nr, "nodes": nr + 1, "n_steps": steps, "dt": dt, "interference": -gap0,
+        "loop_seconds": loop_seconds,
+        "fixed_point_iterations_max": int(cols["fixed_point_iterations"].max()),
+        "fixed_point_iterations_mean": float(cols["fixed_point_iterations"].mean()),
+        "dc_iterations_max": int(cols["dc_iterations"].max()),
+        "dc_iterations_mean": float(cols["dc_iterations"].mean()),
+        "heat_balance_residual_max": heat_balance_max,
+        "final_pressure_mean": float(cols["pressure_mean"][-1]), "lame_pressure": lame,
+        "first_contact_step": int(in_contact[0]) + 1 if in_contact.size else -1,
+        "T_inner_first_contact": float(cols["T_inner_mean"][in_contact[0]]) if in_contact.size else -1,
+        "austenite_step": austenite_step,
+        "peak_pressure_mean": float(cols["pressure_mean"].max()),
+        "reversal_steps": reversal_steps, "pressure_zigzag_steps": zigzag_steps,
+        "unconverged_loops": unconverged,
+    }
+    return cols, summary
+
+
+def write_outputs(out, cols, summary):
+    """history.csv (full double precision) and summary.json, each under a temporary name first."""
+    os.makedirs(out, exist_ok=True)
+    steps = len(cols["t"])
+    table = np.column_stack([np.arange(1, steps + 1)] + [cols[k] for k in HISTORY_COLUMNS])
+    fmt = ["%d"] + ["%d" if k in INTEGER_COLUMNS else "%.17g" for k in HISTORY_COLUMNS]
+    path = os.path.join(out, "history.csv")
+    np.savetxt(path + ".partial", table, fmt=fmt, delimiter=",", header="step," + ",".join(HISTORY_COLUMNS),
+               comments="")
+    os.replace(path + ".partial", path)
+    path = os.path.join(out, "summary.json")
+    with open(path + ".partial", "w") as f:
+        json.dump(summary, f, indent=1, allow_nan=False, default=lambda x: x.item())  # numpy scalars
+    os.replace(path + ".partial", path)
+
+
+def main():
+    p = parse(sys.argv[1:])
+    try:
+        cols, summary = run(p)
+    except (RuntimeError, ArithmeticError) as e:
+        fail(str(e))
+    write_outputs(p["out"], cols, summary)
+    print(f"radial_numpy: nr {summary['nr']}, {summary['n_steps']} steps, loop {summary['loop_seconds']:.3f} s; "
+          f"first contact at step {summary['first_contact_step']}, austenite from step {summary['austenite_step']}; "
+          f"final pressure {summary['final_pressure_mean'] / 1e6:.6f} MPa (Lame {summary['lame_pressure'] / 1e6:.6f})")
+
+
+if __name__ == "__main__":
+    main()
