@@ -9,20 +9,9 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 from units import KELVIN_AT_0C  # noqa: E402,F401  (re-exported for the tests)
 from fits import r_squared  # noqa: E402,F401  (re-exported for the tests)
+from sleeve_geometry import sleeve_geometry  # noqa: E402,F401  (re-exported for the tests)
 TEST_RESULTS = os.path.join(ROOT, "build", "test-results")
 failures = []
-
-
-def sleeve_geometry():
-    """The sleeve's dimensions (m) from meshes/sleeve-geometry.txt, the one place of them:
-    {"Ri": inner radius, "Hr": thickness, "pipe": pipe radius}."""
-    values = {}
-    with open(os.path.join(ROOT, "meshes", "sleeve-geometry.txt")) as f:
-        for line in f:
-            if line.strip() and not line.startswith("#"):
-                key, value = line.split()
-                values[key] = float(value)
-    return values
 
 
 def check(condition, message):

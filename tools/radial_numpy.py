@@ -57,6 +57,9 @@ import time
 import numpy as np
 from scipy.linalg import lapack
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from sleeve_geometry import sleeve_geometry  # noqa: E402
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 # The radial scene's options and defaults (edp/problems/sleeve/parameters.idp, sleeve-radial.edp).
@@ -82,17 +85,6 @@ def fail(message):
     sys.exit(2)
 
 
-def geometry():
-    """Ri, Hr and the pipe radius from meshes/sleeve-geometry.txt (the scene's source too)."""
-    values = {}
-    with open(os.path.join(ROOT, "meshes", "sleeve-geometry.txt")) as f:
-        for line in f:
-            if line.strip() and not line.startswith("#"):
-                key, value = line.split()
-                values[key] = float(value)
-    return values
-
-
 def parse(argv):
     """-name value pairs over DEFAULTS; an unknown name or a bad value fails naming it."""
     p = dict(DEFAULTS)
@@ -106,7 +98,7 @@ def parse(argv):
             p[key] = value if key in STRING_OPTIONS else int(value) if key in INTEGER_OPTIONS else float(value)
         except ValueError:
             fail(f"{name} {value!r} is not a{'n integer' if key in INTEGER_OPTIONS else ' number'}")
-    geo = geometry()
+    geo = sleeve_geometry()
     for key, fallback in (("gcontact", p["g"]), ("gpipe", p["g"]), ("Tpipe", p["Text"]), ("pipeA", geo["pipe"])):
         if p[key] is None:
             p[key] = fallback
