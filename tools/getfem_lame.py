@@ -328,7 +328,7 @@ def doc_lines(r):
           "pressure (total normal force / length of the inner surface, ring-lame's summary "
           "`pressure_mean`), its relative error against Lame's closed form (tools/lame.py). "
           "Solve time: after the mesh is read, the finite element space, assembly, factorisation, contact "
-          "operator (ours: the Delassus operator, one back-solve per contact node), solve and mean pressure "
+          "operator (ours: the Delassus operator, from sparse forward solves of the plugin's LDL' factor), solve and mean pressure "
           "(ring-lame's `solve_seconds`; getfem_lame.py's `solve_seconds`); process: the whole run of one "
           f"level (FreeFEM or Python start, mesh reading included); each the least of {r['repeats']} run(s).", ""]
     w += ["| level | nodes | contact nodes | error (ours) | error (GetFEM) | agreement | agreement (obstacle brick) "
