@@ -222,6 +222,15 @@ TEST(ContactStep, SolvesTheCondensedProblem) {
   }
   EXPECT_GT(active, 0);  // the obstacle pushed somewhere
   EXPECT_LT(active, m);  // and not everywhere: both statuses are exercised
+  // Warm starts: from the answer itself (one back-solve: r does not move) and from half of it (the
+  // correction K^-1 S H' (r - r0)): the same reactions and displacement.
+  for (double scale : {1.0, 0.5}) {
+    Eigen::VectorXd rw = scale * r;
+    std::vector<double> uw(n);
+    ASSERT_TRUE(sma::condensed_global_step(k, c, rhs, gap, threshold, reference, tangent_free, set, rw, uw).converged);
+    EXPECT_LT((rw - r).norm(), 1e-10 * r.norm()) << "warm start x" << scale;
+    EXPECT_LT((Eigen::Map<Eigen::VectorXd>(uw.data(), n) - uu).norm(), 1e-10 * uu.norm()) << "warm start x" << scale;
+  }
 }
 
 }  // namespace
