@@ -2,13 +2,10 @@
 // mode "condensed"), in one call: the script's version spent more time in its per-node loops than
 // in the back-solves it wrapped (docs/benchmarks.md).
 //
-//   u = K^-1 (rhs + S H' r0), r0 the warm start (S = diag(free))
-//   H u_free = H u - W r0
+//   u_free = K^-1 rhs
 //   q_n = -(n.u_free + gap),  q_t = -(t.u_free - t.u_previous) where the node may slide, else 0
-//   r = PSOR on the Delassus problem w = W r - q (psor.hpp; from r0, in/out)
-//   u += K^-1 S H' (r - r0) when r != r0
-// One back-solve when the reactions do not change beyond the sweeps' tolerance (the warm start was
-// the answer: an all-austenite step), two otherwise, as u_free then u would take.
+//   r = PSOR on the Delassus problem w = W r - q (psor.hpp; r is the warm start, in/out)
+//   u = K^-1 (rhs + S H' r) when some r != 0, else u_free   (S = diag(free))
 #pragma once
 
 #include <Eigen/Dense>
@@ -48,16 +45,9 @@ inline PsorResult condensed_global_step(const SpdFactor& k, const CondensedConta
   if ((Eigen::Index)threshold.size() != m || (Eigen::Index)slip_reference.size() != m ||
       (Eigen::Index)tangent_free.size() != m || r.size() != 2 * m)
     throw std::invalid_argument("per-node data of unequal lengths");
+  k.solve(rhs, u);
   Eigen::Map<Eigen::VectorXd> uu(u.begin(), n);
-  Eigen::Map<const Eigen::VectorXd> b(rhs.begin(), n);
-  const Eigen::VectorXd r0 = r;
-  const bool warm = r0.lpNorm<Eigen::Infinity>() > 0;
-  if (warm)
-    uu = k.solve(Eigen::MatrixXd(b + c.free.cwiseProduct(c.h.transpose() * r0)));
-  else
-    k.solve(rhs, u);
-  Eigen::VectorXd hu = c.h * uu;
-  if (warm) hu -= c.w * r0;  // H u_free
+  const Eigen::VectorXd hu = c.h * uu;
   Eigen::VectorXd q(2 * m), g(m);
   for (Eigen::Index i = 0; i < m; ++i) {
     q[2 * i] = -(hu[2 * i] + gap[i]);
@@ -65,15 +55,11 @@ inline PsorResult condensed_global_step(const SpdFactor& k, const CondensedConta
     g[i] = threshold[i];
   }
   const PsorResult res = psor_condensed(c.w, q, g, settings.omega, settings.tol, settings.maxit, r, settings.polish);
-  // A change of the reactions within the sweeps' own tolerance is round-off of the warm start (an
-  // all-austenite step recomputes the same reactions): r is kept at r0, which the sweeps could not
-  // tell from their answer, and u needs no second back-solve.
-  const Eigen::VectorXd dr = r - r0;
-  const double change = dr.lpNorm<Eigen::Infinity>();
-  if (warm && change <= settings.tol * r.lpNorm<Eigen::Infinity>())
-    r = r0;
-  else if (change > 0)
-    uu += k.solve(Eigen::MatrixXd(c.free.cwiseProduct(c.h.transpose() * dr)));
+  if (r.lpNorm<Eigen::Infinity>() > 0) {
+    Eigen::Map<const Eigen::VectorXd> b(rhs.begin(), n);
+    const Eigen::VectorXd loaded = b + c.free.cwiseProduct(c.h.transpose() * r);
+    uu = k.solve(Eigen::MatrixXd(loaded));
+  }
   return res;
 }
 
