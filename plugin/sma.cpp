@@ -35,7 +35,7 @@
 //       only. Fails, naming the fault, on a non-square, non-symmetric or indefinite A.
 //   long SpdSolve(long handle, real[] b, real[] x)   x = A^-1 b (x resized)
 //   long SpdDelassus(long handle, matrix H, real[] free, real[int,int] W, long normalOnly)
-//       W = H S A^-1 S H', S = diag(free), by blocks of right-hand sides (no dense A^-1 H' kept);
+//       W = H S A^-1 S H', S = diag(free), from sparse forward solves (no dense A^-1 H' kept);
 //       normalOnly: only the even (normal) rows and columns, the others 0. Keeps H, free and W in
 //       the slot for SpdContactStep.
 //   long SpdContactStep(long handle, real[] rhs, real[int,int] contactTable, real[] tangentFree,
@@ -228,12 +228,14 @@ FactorSlot& SlotAt(long handle) {
   return *Factors()[handle];
 }
 sma::SpdFactor& FactorAt(long handle) { return SlotAt(handle).factor; }
-// A FreeFEM sparse matrix as an Eigen one (its triplets; the FreeFEM matrix is not modified, so
-// that a factorisation FreeFEM keeps of it stays valid).
+// A FreeFEM sparse matrix as an Eigen one (its triplets; the FreeFEM matrix is not modified: sorting
+// it in place (HashMatrix::CSR) spoilt the factorisation FreeFEM keeps of it for K^-1, measured).
 sma::SparseMatrix ToEigen(Matrice_Creuse<double>* M) {
   HashMatrix<int, double>* A = M->pHM();
   if (!A) throw std::invalid_argument("the matrix is empty");
-  if (A->half) throw std::invalid_argument("the matrix is stored as a half: build it without solver = CG/Cholesky");
+  if (A->half)
+    throw std::invalid_argument("the matrix is stored as a half (symmetric solver): build it with"
+                                " solver = sparsesolver or UMFPACK");
   std::vector<Eigen::Triplet<double, int>> t;
   t.reserve(A->nnz);
   const int shift = A->fortran ? 1 : 0;
@@ -330,19 +332,14 @@ long SpdContactStep(long const& handle, KN<double>* const& rhs, KNM<double>* con
   });
 }
 
-// Projected SOR on the full stiffness system; the matrix is read in CSR form from a copy: sorting
-// the caller's hash matrix in place (HashMatrix::CSR) invalidates the factorisation FreeFEM keeps
-// for K^-1 (measured: the next K^-1 solves were wrong), so the copy costs O(nnz) per call.
+// Projected SOR on the full stiffness system; the matrix is read in CSR form (a row-major copy
+// through ToEigen: O(nnz) per call).
 long PsorFull(Matrice_Creuse<double>* const& K, KN<double>* const& b, KNM<double>* const& contact,
               KN<double>* const& settings, KN<double>* const& u, KN<double>* const& r,
               KN<double>* const& info) {
   return guarded("PsorFull", [&] {
-    HashMatrix<int, double>* A = K->pHM();
-    if (!A) throw std::invalid_argument("the matrix is empty");
-    if (A->half)
-      throw std::invalid_argument("the matrix is stored as a half (symmetric solver): build it with"
-                                  " solver = sparsesolver or UMFPACK");
-    if (A->n != A->m || A->n != b->N() || A->n != u->N())
+    const Eigen::SparseMatrix<double, Eigen::RowMajor, int> rows = ToEigen(K);
+    if (rows.rows() != rows.cols() || rows.rows() != b->N() || rows.rows() != u->N())
       throw std::invalid_argument("K must be square, of the size of b and u");
     const long m = contact->N();
     if (m > 0 && contact->M() != 6)
@@ -350,8 +347,6 @@ long PsorFull(Matrice_Creuse<double>* const& K, KN<double>* const& b, KNM<double
     if (settings->N() < 3) throw std::invalid_argument("settings must be [omega, tol, maxit, ...]");
     if (info->N() != 2) throw std::invalid_argument("info must have 2 entries");
     if (r->N() != 2 * m) throw std::invalid_argument("r must have 2 entries per contact node");
-    HashMatrix<int, double> rows(*A);
-    rows.CSR();
     std::vector<int> vertex(m);
     std::vector<double> nx(m), ny(m), gap(m), g(m), ref(m), rn(m), rt(m);
     for (long i = 0; i < m; ++i) {
@@ -359,7 +354,7 @@ long PsorFull(Matrice_Creuse<double>* const& K, KN<double>* const& b, KNM<double
       nx[i] = (*contact)((long)i, 1L), ny[i] = (*contact)((long)i, 2L), gap[i] = (*contact)((long)i, 3L);
       g[i] = (*contact)((long)i, 4L), ref[i] = (*contact)((long)i, 5L);
     }
-    sma::CsrView csr{(int)rows.n, rows.p, rows.j, rows.aij};
+    sma::CsrView csr{(int)rows.rows(), rows.outerIndexPtr(), rows.innerIndexPtr(), rows.valuePtr()};
     sma::FullPsorSettings set;
     set.omega = (*settings)[0];
     set.tol = (*settings)[1];

@@ -58,7 +58,7 @@ inline PsorResult condensed_global_step(const SpdFactor& k, const CondensedConta
   if (r.lpNorm<Eigen::Infinity>() > 0) {
     Eigen::Map<const Eigen::VectorXd> b(rhs.begin(), n);
     const Eigen::VectorXd loaded = b + c.free.cwiseProduct(c.h.transpose() * r);
-    uu = k.solve(Eigen::MatrixXd(loaded));
+    k.solve(span<const double>(loaded.data(), (std::size_t)n), u);
   }
   return res;
 }

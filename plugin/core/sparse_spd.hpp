@@ -1,11 +1,11 @@
 // A sparse symmetric positive definite matrix factorised once and solved many times, and the
 // Delassus operator of a contact problem built from that factorisation.
 //
-// Why in the plugin: FreeFEM's K^-1 (UMFPACK, a general LU with iterative refinement) cost
-// 126 us per back-solve of the default sleeve's 722 dofs and 518 us at 3458 dofs here; the
-// stiffness and the heat matrices are symmetric positive definite, and a sparse LDL' with a
-// fill-reducing ordering (Eigen's SimplicialLDLT, AMD) solves them in a fraction of that
-// (docs/benchmarks.md, "Back-solves"). The Delassus operator W = H K^-1 H' is formed from sparse
+// Why in the plugin: FreeFEM's K^-1 (UMFPACK, a general LU with iterative refinement) is about
+// four times slower per back-solve than a sparse LDL' with a fill-reducing ordering (Eigen's
+// SimplicialLDLT, AMD) on the stiffness and heat matrices, which are symmetric positive definite
+// (docs/parameters.md, "back-solves"; docs/benchmarks.md, "One DC iteration against one
+// back-solve"). The Delassus operator W = H K^-1 H' is formed from sparse
 // forward solves (delassus()), so that no dense n x m matrix K^-1 H' is ever held.
 //
 // Dirichlet rows marked by a huge diagonal (FreeFEM's tgv) stay in the matrix: an LDL' pivot of
@@ -27,25 +27,6 @@
 namespace sma {
 
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
-
-// The matrix of n x n given by triplets (rows[k], cols[k], values[k]); entries repeated add up.
-inline SparseMatrix sparse_from_triplets(int n_rows, int n_cols, span<const int> rows,
-                                         span<const int> cols, span<const double> values) {
-  if (rows.size() != cols.size() || rows.size() != values.size())
-    throw std::invalid_argument("triplets of unequal lengths");
-  std::vector<Eigen::Triplet<double, int>> t;
-  t.reserve(rows.size());
-  for (std::size_t k = 0; k < rows.size(); ++k) {
-    if (rows[k] < 0 || rows[k] >= n_rows || cols[k] < 0 || cols[k] >= n_cols)
-      throw std::invalid_argument("entry (" + std::to_string(rows[k]) + ", " + std::to_string(cols[k]) +
-                                  ") outside the " + std::to_string(n_rows) + " x " +
-                                  std::to_string(n_cols) + " matrix");
-    t.emplace_back(rows[k], cols[k], values[k]);
-  }
-  SparseMatrix a(n_rows, n_cols);
-  a.setFromTriplets(t.begin(), t.end());
-  return a;
-}
 
 // Largest |a_ij - a_ji| over the largest off-diagonal |a_ij| (0 for a diagonal matrix): FreeFEM
 // assembles both halves of a symmetric form, equal to round-off.
