@@ -40,8 +40,9 @@
 //       the slot for SpdContactStep.
 //   long SpdContactStep(long handle, real[] rhs, real[int,int] contactTable, real[] tangentFree,
 //                       real[] [omega, tol, maxit, polish], real[] r, real[] u, real[] info)
-//       one condensed contact global step (plugin/core/contact_step.hpp): u_free, the PSOR on W
-//       (r warm start in/out), u = K^-1 (rhs + S H' r); returns the sweep count.
+//       one condensed contact global step (plugin/core/contact_step.hpp): the free motion of the
+//       contact rows, the PSOR on W (r warm start in/out), u = K^-1 (rhs + S H' r), by one forward
+//       and one backward solve; returns the sweep count.
 //   long RoundToFloat(real[] x)   rounds every value to the nearest single-precision float
 //       (IEEE round to nearest even), in place; returns how many values changed.
 //   real SmaPluginVersion()  version stamp, checked by edp/lib/plugin.idp.
@@ -281,11 +282,9 @@ long SpdSolve(long const& handle, KN<double>* const& b, KN<double>* const& x) {
 long SpdDelassus(long const& handle, Matrice_Creuse<double>* const& H, KN<double>* const& free,
                  KNM<double>* const& W, long const& normalOnly) {
   return guarded("SpdDelassus", [&] {
-    auto contact = std::make_unique<sma::CondensedContact>();
-    contact->h = ToEigen(H);
-    contact->w = sma::delassus(FactorAt(handle), contact->h, cview(free), normalOnly != 0);
-    contact->free = Eigen::Map<const Eigen::VectorXd>(free->N() ? &(*free)[0] : nullptr, free->N());
-    const Eigen::MatrixXd& w = contact->w;
+    auto contact = std::make_unique<sma::CondensedContact>(
+        sma::condensed_contact(FactorAt(handle), ToEigen(H), cview(free), normalOnly != 0));
+    const Eigen::MatrixXd& w = contact->delassus.w;
     const long k = w.rows();
     W->resize(k, k);
     for (long i = 0; i < k; ++i)

@@ -727,8 +727,8 @@ def write_doc(r, plt):
       f"{1e6 * r['sleeve_circular_1500_floor_seconds_per_step']:.0f} us with the plugin's factorisations "
       f"(summary.json `backsolve_floor_seconds_per_step`); the loop is "
       f"{r['sleeve_circular_1500_loop_over_floor']:.1f} times steps x floor. The algorithm itself needs more "
-      f"than the floor: {r['iterations_mean_per_step']['dc']:.2f} DC iterations per step (each one or two "
-      f"stiffness back-solves) and {r['iterations_mean_per_step']['fixed_point']:.2f} heat solves, almost all "
+      f"than the floor: {r['iterations_mean_per_step']['dc']:.2f} DC iterations per step (each one "
+      f"stiffness back-solve: a forward and a backward solve around the contact sweeps) and {r['iterations_mean_per_step']['fixed_point']:.2f} heat solves, almost all "
       "of them in the transient's first 161 steps (about 25 DC iterations per step there, one in the "
       "all-austenite tail); the rest is the interpreter's statements around them (perf: FreeFEM's "
       "evaluator, and the C++ exception FreeFEM throws at every func's `return`).")

@@ -2,10 +2,13 @@
 // mode "condensed"), in one call: the script's version spent more time in its per-node loops than
 // in the back-solves it wrapped (docs/benchmarks.md).
 //
-//   u_free = K^-1 rhs
+//   z = L^-1 P rhs                                    (forward half of u_free = K^-1 rhs)
+//   H S u_free = (D^-1 Y)' z                          (Y = L^-1 P S H': delassus_factor)
 //   q_n = -(n.u_free + gap),  q_t = -(t.u_free - t.u_previous) where the node may slide, else 0
 //   r = PSOR on the Delassus problem w = W r - q (psor.hpp; r is the warm start, in/out)
-//   u = K^-1 (rhs + S H' r) when some r != 0, else u_free   (S = diag(free))
+//   u = P' L^-T D^-1 (z + Y r) = K^-1 (rhs + S H' r)  (backward half; S = diag(free))
+// One forward and one backward solve per step, whatever r: the cost of one back-solve. (Before,
+// u_free = K^-1 rhs and u = K^-1 (rhs + S H' r): two back-solves whenever some r != 0.)
 #pragma once
 
 #include <Eigen/Dense>
@@ -19,12 +22,21 @@
 namespace sma {
 
 // The contact rows H (2m x n: (n.u, t.u) per node), the free-dof mask and the Delassus operator
-// W = H S K^-1 S H' (delassus()) of one contact problem.
+// W = H S K^-1 S H' with its factor Y (delassus_factor) of one contact problem.
 struct CondensedContact {
   SparseMatrix h;
   Eigen::VectorXd free;
-  Eigen::MatrixXd w;
+  DelassusFactor delassus;
 };
+
+inline CondensedContact condensed_contact(const SpdFactor& k, const SparseMatrix& h, span<const double> free,
+                                          bool normal_only) {
+  CondensedContact c;
+  c.h = h;
+  c.delassus = delassus_factor(k, h, free, normal_only);
+  c.free = Eigen::Map<const Eigen::VectorXd>(free.begin(), (Eigen::Index)free.size());
+  return c;
+}
 
 struct ContactStepSettings {
   double omega = 1.88, tol = 1e-10;
@@ -38,28 +50,33 @@ inline PsorResult condensed_global_step(const SpdFactor& k, const CondensedConta
                                         span<const double> slip_reference, span<const double> tangent_free,
                                         const ContactStepSettings& settings, Eigen::VectorXd& r, span<double> u) {
   const Eigen::Index m = (Eigen::Index)gap.size(), n = k.size();
-  if (c.h.rows() != 2 * m || c.h.cols() != n || c.w.rows() != 2 * m || c.free.size() != n)
+  const DelassusFactor& d = c.delassus;
+  if (c.h.rows() != 2 * m || c.h.cols() != n || d.w.rows() != 2 * m || c.free.size() != n || d.y.rows() != n)
     throw std::invalid_argument("the contact problem has " + std::to_string(c.h.rows() / 2) + " nodes and " +
                                 std::to_string(c.h.cols()) + " dofs, the step " + std::to_string(m) + " and " +
                                 std::to_string(n));
   if ((Eigen::Index)threshold.size() != m || (Eigen::Index)slip_reference.size() != m ||
       (Eigen::Index)tangent_free.size() != m || r.size() != 2 * m)
     throw std::invalid_argument("per-node data of unequal lengths");
-  k.solve(rhs, u);
-  Eigen::Map<Eigen::VectorXd> uu(u.begin(), n);
-  const Eigen::VectorXd hu = c.h * uu;
+  Eigen::VectorXd z = k.forward(rhs);
+  // (H S u_free) on the rows Y stands for; the others (tangential rows of a frictionless problem,
+  // whose W rows are 0 and r_t stays 0) are not needed.
+  const Eigen::VectorXd motion = d.y_scaled.transpose() * z;
+  Eigen::VectorXd hu = Eigen::VectorXd::Zero(2 * m);
+  for (std::size_t j = 0; j < d.rows.size(); ++j) hu[d.rows[j]] = motion[(Eigen::Index)j];
   Eigen::VectorXd q(2 * m), g(m);
   for (Eigen::Index i = 0; i < m; ++i) {
     q[2 * i] = -(hu[2 * i] + gap[i]);
-    q[2 * i + 1] = tangent_free[i] != 0 ? -(hu[2 * i + 1] - slip_reference[i]) : 0.0;
+    q[2 * i + 1] = tangent_free[i] != 0 && d.w(2 * i + 1, 2 * i + 1) != 0.0 ? -(hu[2 * i + 1] - slip_reference[i]) : 0.0;
     g[i] = threshold[i];
   }
-  const PsorResult res = psor_condensed(c.w, q, g, settings.omega, settings.tol, settings.maxit, r, settings.polish);
+  const PsorResult res = psor_condensed(d.w, q, g, settings.omega, settings.tol, settings.maxit, r, settings.polish);
   if (r.lpNorm<Eigen::Infinity>() > 0) {
-    Eigen::Map<const Eigen::VectorXd> b(rhs.begin(), n);
-    const Eigen::VectorXd loaded = b + c.free.cwiseProduct(c.h.transpose() * r);
-    k.solve(span<const double>(loaded.data(), (std::size_t)n), u);
+    Eigen::VectorXd reactions((Eigen::Index)d.rows.size());
+    for (std::size_t j = 0; j < d.rows.size(); ++j) reactions[(Eigen::Index)j] = r[d.rows[j]];
+    z += d.y * reactions;
   }
+  k.backward(z, u);
   return res;
 }
 

@@ -35,9 +35,10 @@ inline double contact_law_residual(const Eigen::MatrixXd& W, const Eigen::Vector
   const Eigen::VectorXd w = W * r - q;
   double worst = 0.0, scale = 0.0;
   for (Eigen::Index i = 0; i < g.size(); ++i) {
-    const double rhoN = 1.0 / W(2 * i, 2 * i), rhoT = 1.0 / W(2 * i + 1, 2 * i + 1);
+    const double rhoN = 1.0 / W(2 * i, 2 * i), wtt = W(2 * i + 1, 2 * i + 1);
     const double rn = std::max(0.0, r[2 * i] - rhoN * w[2 * i]);
-    const double rt = std::clamp(r[2 * i + 1] - rhoT * w[2 * i + 1], -g[i], g[i]);
+    // W_tt = 0: a blocked tangential motion (g = 0, checked by psor_condensed), r_t must be 0.
+    const double rt = wtt == 0.0 ? 0.0 : std::clamp(r[2 * i + 1] - (1.0 / wtt) * w[2 * i + 1], -g[i], g[i]);
     worst = std::max({worst, std::fabs(rn - r[2 * i]), std::fabs(rt - r[2 * i + 1])});
     scale = std::max({scale, std::fabs(r[2 * i]), std::fabs(r[2 * i + 1])});
   }

@@ -84,6 +84,25 @@ class SpdFactor {
     Eigen::Map<Eigen::VectorXd> xx(x.begin(), n_);
     xx = ldlt_.solve(bb);
   }
+  // The two halves of solve(), for a caller that works between them (the condensed contact step
+  // reads the contact rows' motion off z and adds the reactions' load to it): z = L^-1 P b, then
+  // x = P' L^-T D^-1 z. backward(forward(b)) is solve(b), operation for operation.
+  Eigen::VectorXd forward(span<const double> b) const {
+    check_size(b.size(), "right-hand side");
+    Eigen::Map<const Eigen::VectorXd> bb(b.begin(), n_);
+    Eigen::VectorXd z = ldlt_.permutationP().size() ? Eigen::VectorXd(ldlt_.permutationP() * bb) : Eigen::VectorXd(bb);
+    ldlt_.matrixL().solveInPlace(z);
+    return z;
+  }
+  void backward(const Eigen::VectorXd& z, span<double> x) const {
+    check_size((std::size_t)z.size(), "forward-solved vector");
+    check_size(x.size(), "solution");
+    Eigen::VectorXd t = ldlt_.vectorD().asDiagonal().inverse() * z;
+    ldlt_.matrixU().solveInPlace(t);
+    Eigen::Map<Eigen::VectorXd> xx(x.begin(), n_);
+    if (ldlt_.permutationPinv().size()) xx = ldlt_.permutationPinv() * t;
+    else xx = t;
+  }
   // X = A^-1 B for a block of right-hand sides.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const {
     check_size((std::size_t)b.rows(), "right-hand side block");
@@ -150,12 +169,21 @@ class SpdFactor {
 };
 
 // The Delassus operator W = H S A^-1 S H' (k x k) of the contact rows H (k x n), S = diag(free)
-// zeroing the supported (Dirichlet) dofs. normal_only: only the even rows of H (the normal
-// components of interleaved (n, t) pairs) are formed; the odd rows and columns of W are 0.
-// With P A P' = L D L' and Y = L^-1 P S H' (sparse forward solves: SpdFactor::forward_solve_sparse),
-// W = Y' D^-1 Y: no backward solve, no dense n x k matrix; memory is that of the sparse Y.
-inline Eigen::MatrixXd delassus(const SpdFactor& a, const SparseMatrix& h, span<const double> free,
-                                bool normal_only) {
+// zeroing the supported (Dirichlet) dofs, with its factor: with P A P' = L D L' and
+// Y = L^-1 P S H_rows' (sparse forward solves: SpdFactor::forward_solve_sparse), W = Y' D^-1 Y: no
+// backward solve, no dense n x k matrix; memory is that of the sparse Y. normal_only: only the even
+// rows of H (the normal components of interleaved (n, t) pairs) are formed; the odd rows and
+// columns of W are 0. Y and D^-1 Y are kept for the contact step (contact_step.hpp), which gets
+// H S A^-1 b = (D^-1 Y)' L^-1 P b and A^-1 (b + S H' r) from one forward and one backward solve.
+struct DelassusFactor {
+  Eigen::MatrixXd w;       // k x k
+  SparseMatrix y;          // n x rows.size(): L^-1 P S H_rows'
+  SparseMatrix y_scaled;   // D^-1 Y
+  std::vector<int> rows;   // the rows of H that the columns of Y stand for
+};
+
+inline DelassusFactor delassus_factor(const SpdFactor& a, const SparseMatrix& h, span<const double> free,
+                                      bool normal_only) {
   const int n = a.size(), k = (int)h.rows();
   if (h.cols() != n)
     throw std::invalid_argument("H has " + std::to_string(h.cols()) + " columns for a " + std::to_string(n) +
@@ -165,7 +193,8 @@ inline Eigen::MatrixXd delassus(const SpdFactor& a, const SparseMatrix& h, span<
                                 " dofs");
   if (normal_only && k % 2 != 0) throw std::invalid_argument("normal_only needs (n, t) pairs of rows");
   Eigen::Map<const Eigen::VectorXd> mask(free.begin(), n);
-  std::vector<int> wanted;
+  DelassusFactor result;
+  std::vector<int>& wanted = result.rows;
   for (int r = 0; r < k; r += normal_only ? 2 : 1) wanted.push_back(r);
   // The wanted rows of H, masked, as the columns of B = S H_wanted'.
   const SparseMatrix ht = h.transpose();
@@ -175,14 +204,19 @@ inline Eigen::MatrixXd delassus(const SpdFactor& a, const SparseMatrix& h, span<
       if (mask[it.row()] != 0.0) t.emplace_back((int)it.row(), (int)c, it.value() * mask[it.row()]);
   SparseMatrix b(n, (int)wanted.size());
   b.setFromTriplets(t.begin(), t.end());
-  const SparseMatrix y = a.forward_solve_sparse(b);
+  result.y = a.forward_solve_sparse(b);
   const Eigen::VectorXd dinv = a.diagonal().cwiseInverse();
-  const SparseMatrix scaled = dinv.asDiagonal() * y;
-  const Eigen::MatrixXd compact = Eigen::MatrixXd(SparseMatrix(y.transpose() * scaled));
-  Eigen::MatrixXd w = Eigen::MatrixXd::Zero(k, k);
+  result.y_scaled = dinv.asDiagonal() * result.y;
+  const Eigen::MatrixXd compact = Eigen::MatrixXd(SparseMatrix(result.y.transpose() * result.y_scaled));
+  result.w = Eigen::MatrixXd::Zero(k, k);
   for (std::size_t i = 0; i < wanted.size(); ++i)
-    for (std::size_t j = 0; j < wanted.size(); ++j) w(wanted[i], wanted[j]) = compact(i, j);
-  return w;
+    for (std::size_t j = 0; j < wanted.size(); ++j) result.w(wanted[i], wanted[j]) = compact(i, j);
+  return result;
+}
+
+inline Eigen::MatrixXd delassus(const SpdFactor& a, const SparseMatrix& h, span<const double> free,
+                                bool normal_only) {
+  return delassus_factor(a, h, free, normal_only).w;
 }
 
 }  // namespace sma

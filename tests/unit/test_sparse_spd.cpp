@@ -61,6 +61,20 @@ TEST(SparseSpd, SolveEqualsDenseSolve) {
   EXPECT_GT(f.factor_nonzeros(), 0);
 }
 
+// The two halves of a solve (the contact step works between them) give solve() bit for bit.
+TEST(SparseSpd, ForwardThenBackwardIsTheSolve) {
+  std::mt19937 rng(2);
+  const SparseMatrix a = grid_laplacian(11, 7, 0.02);
+  sma::SpdFactor f;
+  f.factorize(a);
+  const std::vector<double> b = to_std(random_vector(a.rows(), rng));
+  std::vector<double> x(a.rows()), halves(a.rows());
+  f.solve(b, x);
+  f.backward(f.forward(b), halves);
+  for (int i = 0; i < a.rows(); ++i) ASSERT_EQ(halves[i], x[i]) << "dof " << i;
+  EXPECT_THROW(f.backward(Eigen::VectorXd::Zero(a.rows() + 1), halves), std::invalid_argument);
+}
+
 // A Dirichlet row marked by FreeFEM's tgv (1e30 on the diagonal, its couplings kept): its unknown
 // is b_i / 1e30 and the others solve the reduced system.
 TEST(SparseSpd, TgvRowsBehaveAsDirichlet) {
@@ -191,14 +205,12 @@ TEST(ContactStep, SolvesTheCondensedProblem) {
     t.emplace_back(2 * i, nodes[i], 1.0);          // normal component: the dof itself
     t.emplace_back(2 * i + 1, nodes[i] + 1, 1.0);  // "tangential": a neighbour dof
   }
-  sma::CondensedContact c;
-  c.h = SparseMatrix(2 * m, n);
-  c.h.setFromTriplets(t.begin(), t.end());
-  c.free = Eigen::VectorXd::Ones(n);
+  SparseMatrix h(2 * m, n);
+  h.setFromTriplets(t.begin(), t.end());
   sma::SpdFactor k;
   k.factorize(a);
   std::vector<double> free(n, 1.0);
-  c.w = sma::delassus(k, c.h, free, true);
+  const sma::CondensedContact c = sma::condensed_contact(k, h, free, true);
   // A load pulling every dof down by 1: the free solution penetrates the obstacle (gap 0.5) at
   // some nodes and not at others (gaps up to 100).
   std::vector<double> rhs(n, -1.0), gap = {0.5, 100.0, 0.5, 2.0}, threshold(m, 0.0), reference(m, 0.0),
@@ -231,6 +243,66 @@ TEST(ContactStep, SolvesTheCondensedProblem) {
     EXPECT_LT((rw - r).norm(), 1e-10 * r.norm()) << "warm start x" << scale;
     EXPECT_LT((Eigen::Map<Eigen::VectorXd>(uw.data(), n) - uu).norm(), 1e-10 * uu.norm()) << "warm start x" << scale;
   }
+}
+
+
+// The step's one forward and one backward solve against its definition written out with full
+// solves: u_free = K^-1 rhs, q from H u_free, PSOR on W, u = K^-1 (rhs + S H' r). With friction
+// (all rows of H formed, sliding and sticking nodes) and supported dofs on the contact rows.
+TEST(ContactStep, OneBackSolveEqualsTheTwoSolveDefinition) {
+  SparseMatrix a = grid_laplacian(10, 8, 0.03);
+  const int n = a.rows(), m = 5;
+  const int nodes[m] = {2, 17, 33, 50, 66};
+  std::vector<Eigen::Triplet<double, int>> t;
+  for (int i = 0; i < m; ++i) {
+    t.emplace_back(2 * i, nodes[i], 0.8);
+    t.emplace_back(2 * i, nodes[i] + 1, 0.6);
+    t.emplace_back(2 * i + 1, nodes[i], -0.6);
+    t.emplace_back(2 * i + 1, nodes[i] + 1, 0.8);
+  }
+  SparseMatrix h(2 * m, n);
+  h.setFromTriplets(t.begin(), t.end());
+  std::vector<double> free(n, 1.0);
+  free[nodes[0] + 1] = 0.0;  // a support under a contact row: S must mask it
+  free[40] = 0.0;
+  for (int i = 0; i < n; ++i)
+    if (free[i] == 0.0) a.coeffRef(i, i) = 1e30;  // supports marked as FreeFEM does (tgv)
+  sma::SpdFactor k;
+  k.factorize(a);
+  const sma::CondensedContact c = sma::condensed_contact(k, h, free, false);
+  std::mt19937 rng(9);
+  Eigen::VectorXd rhs = random_vector(n, rng) - 2.0 * Eigen::VectorXd::Ones(n);
+  const Eigen::VectorXd s = Eigen::Map<Eigen::VectorXd>(free.data(), n);
+  rhs = rhs.cwiseProduct(s);
+  std::vector<double> gap = {0.1, 0.3, 0.05, 500.0, 0.2}, threshold = {0.5, 0.01, 2.0, 0.5, 0.05},
+                      reference(m, 0.0), tangent_free(m, 1.0), u(n);
+  sma::ContactStepSettings set;
+  set.tol = 1e-14;
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(2 * m);
+  ASSERT_TRUE(sma::condensed_global_step(k, c, to_std(rhs), gap, threshold, reference, tangent_free, set, r, u)
+                  .converged);
+  // The definition, with dense solves.
+  const Eigen::LLT<Eigen::MatrixXd> dense{Eigen::MatrixXd(a)};
+  const Eigen::VectorXd ufree = dense.solve(rhs), hu = h * ufree;
+  Eigen::VectorXd q(2 * m), g(m);
+  for (int i = 0; i < m; ++i) {
+    q[2 * i] = -(hu[2 * i] + gap[i]);
+    q[2 * i + 1] = -(hu[2 * i + 1] - reference[i]);
+    g[i] = threshold[i];
+  }
+  Eigen::VectorXd rexact = Eigen::VectorXd::Zero(2 * m);
+  ASSERT_TRUE(sma::psor_condensed(c.delassus.w, q, g, set.omega, set.tol, set.maxit, rexact, set.polish).converged);
+  const Eigen::VectorXd uexact = dense.solve(rhs + s.cwiseProduct(h.transpose() * rexact));
+  EXPECT_LT((r - rexact).norm(), 1e-11 * rexact.norm());
+  EXPECT_LT(relative(Eigen::Map<Eigen::VectorXd>(u.data(), n), uexact), 1e-12);
+  int pushing = 0, sliding = 0, sticking = 0;
+  for (int i = 0; i < m; ++i) {
+    pushing += rexact[2 * i] > 0;
+    if (rexact[2 * i] > 0) (std::fabs(std::fabs(rexact[2 * i + 1]) - g[i]) < 1e-12 ? sliding : sticking)++;
+  }
+  EXPECT_GT(pushing, 0);
+  EXPECT_LT(pushing, m);  // a node off the obstacle too
+  EXPECT_GT(sliding + sticking, 0);
 }
 
 }  // namespace
