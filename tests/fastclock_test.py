@@ -28,7 +28,9 @@ cout << "clock advance " << c1 - c0 << endl;
 """
 CASES = [("sleeve-circular", ["-mesh", "meshes/sleeve-coarse.msh", "-steps", "200"]),
          ("sleeve-radial", ["-steps", "200"])]
-TIMING = ("wall_seconds", "backsolve_floor_seconds_per_step", "loop_over_floor")
+TIMING = ("wall_seconds", "backsolve_floor_seconds_per_step", "loop_over_floor",
+          "stiffness_backsolve_seconds", "heat_backsolve_seconds", "backsolves_needed_seconds",
+          "loop_over_backsolves_needed")
 
 
 def ff(args, fastclock, **kw):

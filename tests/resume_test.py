@@ -33,7 +33,9 @@ CASES = [("sleeve-circular", ["-mesh", "meshes/sleeve-coarse.msh"]),
          ("sleeve-elliptic-friction", ["-mesh", "meshes/sleeve-coarse.msh"]),
          ("sleeve-radial", [])]
 COMMON = ["-steps", "300", "-quiet", "1"]
-TIMING = ("wall_seconds", "resumed_from_step", "backsolve_floor_seconds_per_step", "loop_over_floor")
+TIMING = ("wall_seconds", "resumed_from_step", "backsolve_floor_seconds_per_step", "loop_over_floor",
+          "stiffness_backsolve_seconds", "heat_backsolve_seconds", "backsolves_needed_seconds",
+          "loop_over_backsolves_needed")
 
 
 def run(scene, out, *extra):

@@ -25,6 +25,7 @@ summary.json with the headline figures) and docs/benchmarks.md with its PNGs in 
      written again in vectorised numpy), whole process and loop time, and the curve difference.
 Usage: tools/bench.py [--quick]   (--quick: a small grid, for checking the script itself)
 """
+import csv
 import json
 import math
 import os
@@ -407,6 +408,20 @@ def main():
     results["sleeve_circular_1500_loop_over_floor"] = statistics.median(x["loop_over_floor"] for _, x in default_runs)
     results["sleeve_circular_1500_floor_seconds_per_step"] = statistics.median(
         x["backsolve_floor_seconds_per_step"] for _, x in default_runs)
+    # The back-solves the algorithm needed (one per DC iteration, one heat solve per fixed-point
+    # iteration, at the run's own times) and the loop over them: what the scripts add.
+    for key in ("stiffness_backsolve_seconds", "heat_backsolve_seconds", "backsolves_needed_seconds",
+                "loop_over_backsolves_needed"):
+        results[f"sleeve_circular_1500_{key}"] = statistics.median(x[key] for _, x in default_runs)
+    # Where the iterations fall: the transient (up to the step the ring is austenite for good) and the tail.
+    with open(os.path.join(OUT, "circular-default", "history.csv")) as f:
+        steps = list(csv.DictReader(f))
+    transient = [r for r in steps if int(r["step"]) < s["austenite_step"]]
+    tail = [r for r in steps if int(r["step"]) >= s["austenite_step"]]
+    results["sleeve_circular_1500_phases"] = {
+        name: {"steps": len(rows), "dc_per_step": sum(float(r["dc_iterations"]) for r in rows) / max(len(rows), 1),
+               "fixed_point_per_step": sum(float(r["fixed_point_iterations"]) for r in rows) / max(len(rows), 1)}
+        for name, rows in (("transient", transient), ("tail", tail))}
     # What the ParaView frames cost (-vtkevery 50 by default against only the three instants), and
     # what the preloaded clock() (plugin/fastclock.c) saves: the same run with FreeFEM's own.
     variants = {}
@@ -646,7 +661,9 @@ def write_doc(r, plt):
          r["sleeve_circular_1500_wall_seconds"] <= 1.5)
     goal("its loop <= 1.5 x its floor (one stiffness and one heat back-solve per step)",
          f"{r['sleeve_circular_1500_loop_over_floor']:.1f} x (floor {1e6 * r['sleeve_circular_1500_floor_seconds_per_step']:.0f} us per step, "
-         f"the plugin's back-solves)", r["sleeve_circular_1500_loop_over_floor"] <= 1.5)
+         f"the plugin's back-solves); {r['sleeve_circular_1500_loop_over_backsolves_needed']:.1f} x the back-solves "
+         f"the algorithm needs ({r['sleeve_circular_1500_backsolves_needed_seconds']:.3f} s)",
+         r["sleeve_circular_1500_loop_over_floor"] <= 1.5)
     goal("one DC iteration <= 2 back-solves",
          f"{r['dc_iteration_over_backsolve']:.2f} with contact, {r['dc_iteration_over_backsolve_without_contact']:.2f} without",
          r["dc_iteration_over_backsolve"] <= 2)
@@ -723,15 +740,26 @@ def write_doc(r, plt):
       f"every block (for a display off by default). tools/ff preloads plugin/fastclock.c, a clock() read "
       f"through the vDSO: {v['stock_clock']['loop_seconds']:.2f} s -> {r['sleeve_circular_1500_loop_seconds']:.2f} s "
       f"of loop, outputs byte-identical (tests/fastclock_test.py).")
+    ph = r["sleeve_circular_1500_phases"]
     w(f"- **The floor**: one stiffness and one heat back-solve per step, "
       f"{1e6 * r['sleeve_circular_1500_floor_seconds_per_step']:.0f} us with the plugin's factorisations "
-      f"(summary.json `backsolve_floor_seconds_per_step`); the loop is "
-      f"{r['sleeve_circular_1500_loop_over_floor']:.1f} times steps x floor. The algorithm itself needs more "
-      f"than the floor: {r['iterations_mean_per_step']['dc']:.2f} DC iterations per step (each one "
-      f"stiffness back-solve: a forward and a backward solve around the contact sweeps) and {r['iterations_mean_per_step']['fixed_point']:.2f} heat solves, almost all "
-      "of them in the transient's first 161 steps (about 25 DC iterations per step there, one in the "
-      "all-austenite tail); the rest is the interpreter's statements around them (perf: FreeFEM's "
-      "evaluator, and the C++ exception FreeFEM throws at every func's `return`).")
+      f"({1e6 * r['sleeve_circular_1500_stiffness_backsolve_seconds']:.1f} + "
+      f"{1e6 * r['sleeve_circular_1500_heat_backsolve_seconds']:.1f} us; summary.json "
+      f"`backsolve_floor_seconds_per_step`); the loop is {r['sleeve_circular_1500_loop_over_floor']:.1f} times "
+      f"steps x floor.")
+    w(f"- **What the algorithm needs**: {r['iterations_mean_per_step']['dc']:.2f} DC iterations per step (each one "
+      f"stiffness back-solve: a forward and a backward solve around the contact sweeps) and "
+      f"{r['iterations_mean_per_step']['fixed_point']:.2f} heat solves; in the transient (the "
+      f"{ph['transient']['steps']} steps before the ring is austenite for good) "
+      f"{ph['transient']['dc_per_step']:.1f} DC iterations and {ph['transient']['fixed_point_per_step']:.1f} "
+      f"fixed-point iterations per step, in the tail ({ph['tail']['steps']} steps) "
+      f"{ph['tail']['dc_per_step']:.2f} and {ph['tail']['fixed_point_per_step']:.2f}. Those back-solves alone take "
+      f"{r['sleeve_circular_1500_backsolves_needed_seconds']:.3f} s, "
+      f"{r['sleeve_circular_1500_backsolves_needed_seconds'] / ((ph['transient']['steps'] + ph['tail']['steps']) * r['sleeve_circular_1500_floor_seconds_per_step']):.1f} "
+      f"times steps x floor: no implementation of these nested fixed points reaches 1.5 times the floor. The loop is "
+      f"{r['sleeve_circular_1500_loop_over_backsolves_needed']:.1f} times them (summary.json "
+      f"`loop_over_backsolves_needed`): the rest is the interpreter's statements around them (perf: FreeFEM's "
+      "evaluator, its sparse products, and the C++ exception FreeFEM throws at every func's `return`).")
     w("")
     w("## Error metric")
     w("")
