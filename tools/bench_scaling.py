@@ -6,7 +6,9 @@ the default scene's kind of mesh) from 1 729 to 98 841 nodes. For each size, two
   A. 150 steps of 1 s (-steps 150 -tend 150) with a checkpoint after step 30, stopped there
      (-checkpoint 30 -stopafter 30: exit 4): the transient (austenite for good from step 17);
   B. the same run resumed (-resume 1 -checkpoint 0: no more checkpoints written, they are not part
-     of the loop measured): steps 31-150, the transient-free part, where every step
+     of the loop measured), REPEATS times from the same checkpoint in rounds over the sizes (a drift
+     of the machine's speed then falls on every size alike), medians taken: steps 31-150, the
+     transient-free part, where every step
      takes 1 fixed-point iteration, 1 DC iteration and 1 PSOR sweep whatever the mesh. B is timed:
      its loop (summary.json wall_seconds) per step and per DC iteration, its peak memory (max RSS,
      /usr/bin/time -f %M), its setup (process wall time minus loop: FreeFEM start, mesh, assembly,
@@ -27,6 +29,8 @@ import csv
 import json
 import math
 import os
+import shutil
+import statistics
 import subprocess
 import sys
 import time
@@ -44,6 +48,11 @@ NODE_LIMIT = 100_000
 STEPS = 150          # of 1 s each: the default run's 150 s at 10 times its step
 CHECKPOINT = 30      # the transient is over by step 17 at every size measured (dt = 1 s)
 QUICK_STEPS = 60
+# B is run this many times from the same checkpoint, in rounds over the sizes, and the medians taken:
+# a single 120-step loop at 1.7k nodes lasts about 0.1 s, and one run per size, size after size,
+# gave fitted exponents from 0.96 to 1.14 on three make bench runs of the same code (the machine's
+# speed drifts over minutes: 0.88 to 1.97 ms/step at nr 18).
+REPEATS = 5
 # -fpmaxit: the transient's heat <-> phase fixed point took at most 31, 60, 111 iterations at 18, 36,
 # 72 layers (dt = 1 s), about 200 (the default limit) expected at 140; a limit only, nothing changes
 # where the loop converges below it.
@@ -93,23 +102,50 @@ def iteration_stats(rows):
     return out
 
 
-def measure(nr, mesh, out, steps):
-    """Processes A and B of the module docstring for one mesh; returns the row."""
+def run_transient(nr, mesh, out, steps):
+    """Process A of the module docstring; returns (its record, the B arguments) or a failure row.
+    A's folder is kept aside (out + ".after-transient"): a finished run removes its checkpoint, so
+    each B starts from a copy."""
     args = [SCENE, "-mesh", mesh, "-steps", steps, *OPTIONS, "-out", out]
     code, wall_a, rss_a, msg = timed([*args, "-checkpoint", CHECKPOINT, "-stopafter", CHECKPOINT])
     if code != 4:
         return {"nr": nr, "mesh": mesh, "failure": f"transient run: exit {code}: {msg}"}
+    saved = out + ".after-transient"
+    shutil.rmtree(saved, ignore_errors=True)
+    shutil.copytree(out, saved)
     # B resumes with -checkpoint 0: the checkpoints A needed are not part of the loop timed here
     # (at every 30th step they wrote the whole state: a quarter of the loop at nr 18).
-    code, wall_b, rss_b, msg = timed([*args, "-checkpoint", 0, "-resume", 1])
+    return {"nr": nr, "mesh": mesh, "out": out, "saved": saved, "wall_a": wall_a, "rss_a": rss_a,
+            "args_b": [*args, "-checkpoint", 0, "-resume", 1], "runs": []}
+
+
+def run_resumed(a):
+    """One process B from A's checkpoint; appends (wall, max RSS, summary) to a["runs"]; returns the
+    failure message or ""."""
+    shutil.rmtree(a["out"])
+    shutil.copytree(a["saved"], a["out"])
+    code, wall_b, rss_b, msg = timed(a["args_b"])
     if code != 0:
-        return {"nr": nr, "mesh": mesh, "failure": f"resumed run: exit {code}: {msg}"}
-    s = json.load(open(os.path.join(out, "summary.json")))
+        return f"resumed run: exit {code}: {msg}"
+    a["runs"].append((wall_b, rss_b, json.load(open(os.path.join(a["out"], "summary.json")))))
+    return ""
+
+
+def row(a):
+    """The table row of one size from its A and its B runs (medians of the B runs)."""
+    shutil.rmtree(a["saved"], ignore_errors=True)
+    nr, mesh, out, runs = a["nr"], a["mesh"], a["out"], a["runs"]
+    loops = [r[2]["wall_seconds"] for r in runs]
+    floors = [r[2]["backsolve_floor_seconds_per_step"] for r in runs]
+    wall_a, rss_a = a["wall_a"], a["rss_a"]
+    wall_b = statistics.median(r[0] for r in runs)
+    rss_b = max(r[1] for r in runs)
+    s = runs[-1][2]
     rows = history(os.path.join(out, "history.csv"))
     timed_rows = [r for r in rows if int(r["step"]) > CHECKPOINT]
     transient_rows = [r for r in rows if int(r["step"]) <= CHECKPOINT]
     its, its_transient = iteration_stats(timed_rows), iteration_stats(transient_rows)
-    loop = s["wall_seconds"]
+    loop = statistics.median(loops)
     setup = wall_b - loop
     transient_loop = max(wall_a - setup, 0.0)
     return {"nr": nr, "mesh": mesh, "nodes": s["nodes"], "triangles": s["triangles"],
@@ -123,8 +159,9 @@ def measure(nr, mesh, out, steps):
             "transient_ms_per_dc_iteration_approx": 1e3 * transient_loop / its_transient["dc"]["sum"],
             "austenite_step": s["austenite_step"], "final_pressure_mean": s["final_pressure_mean"],
             # The floor: one stiffness and one heat back-solve (the scene times them after its loop).
-            "floor_ms_per_step": 1e3 * s["backsolve_floor_seconds_per_step"],
-            "loop_over_floor": s["loop_over_floor"]}
+            "floor_ms_per_step": 1e3 * statistics.median(floors),
+            "loop_over_floor": loop / (len(timed_rows) * statistics.median(floors)),
+            "repeats": len(runs), "loop_seconds_runs": loops}
 
 
 def scaling(out_root, quick=False, node_limit=None):
@@ -142,13 +179,26 @@ def scaling(out_root, quick=False, node_limit=None):
             print(f"bench: scaling, nr {nr} ({nodes} nodes): skipped, above the node limit {limit}", flush=True)
             rows.append({"nr": nr, "mesh": mesh, "nodes": nodes, "skipped": f"above the node limit {limit}"})
             continue
-        print(f"bench: scaling, sleeve-circular nr {nr} ({nodes} nodes), steps {CHECKPOINT + 1}-{steps} timed",
+        print(f"bench: scaling, sleeve-circular nr {nr} ({nodes} nodes): the transient, steps 1-{CHECKPOINT}",
               flush=True)
-        rows.append(measure(nr, mesh, os.path.join(out_root, f"scaling-nr{nr}"), steps))
+        rows.append(run_transient(nr, mesh, os.path.join(out_root, f"scaling-nr{nr}"), steps))
         if "failure" in rows[-1]:
             print(f"bench: scaling, nr {nr}: {rows[-1]['failure']}", flush=True)
+    # The timed runs in rounds over the sizes (each round runs every size once), so that a drift of
+    # the machine's speed over the minutes of the series falls on every size alike.
+    for k in range(REPEATS):
+        print(f"bench: scaling, round {k + 1}/{REPEATS}: steps {CHECKPOINT + 1}-{steps} timed at every size",
+              flush=True)
+        for i, a in enumerate(rows):
+            if "runs" in a:
+                failure = run_resumed(a)
+                if failure:
+                    print(f"bench: scaling, nr {a['nr']}: {failure}", flush=True)
+                    shutil.rmtree(a["saved"], ignore_errors=True)
+                    rows[i] = {"nr": a["nr"], "mesh": a["mesh"], "failure": failure}
+    rows = [row(a) if "runs" in a else a for a in rows]
     return summarise({"steps": steps, "checkpoint": CHECKPOINT, "dt_seconds": 150 / steps, "node_limit": limit,
-                      "baseline_rss_MB": baseline, "rows": rows})
+                      "baseline_rss_MB": baseline, "repeats": REPEATS, "rows": rows})
 
 
 def summarise(record):
@@ -235,7 +285,8 @@ def section(rec, plt, save):
       f"{rec['dt_seconds']:g} s: a run stopped with a checkpoint after step {rec['checkpoint']} (the transient), "
       f"then resumed and timed over steps {rec['checkpoint'] + 1}-{rec['steps']}, the transient-free part "
       "(tools/bench_scaling.py; docs/parameters.md#scaling-benchmark-toolsbench_scalingpy). ms/step and ms per DC "
-      "iteration: the resumed loop (summary.json wall_seconds) over its steps and its DC iterations; memory: the "
+      f"iteration: the resumed loop (summary.json wall_seconds, median of {done[0].get('repeats', 1) if done else 1} "
+      "resumed runs from the same checkpoint) over its steps and its DC iterations; memory: the "
       "resumed process's max RSS (/usr/bin/time -f %M); setup: its wall time minus its loop. The transient's "
       "ms per DC iteration is approximate (the stopped process's time minus the setup).")
     w("")
