@@ -36,8 +36,8 @@
 //   long SpdSolve(long handle, real[] b, real[] x)   x = A^-1 b (x resized)
 //   long SpdDelassus(long handle, matrix H, real[] free, real[int,int] W, long normalOnly)
 //       W = H S A^-1 S H', S = diag(free), from sparse forward solves (no dense A^-1 H' kept);
-//       normalOnly: only the even (normal) rows and columns, the others 0. Keeps H, free and W in
-//       the slot for SpdContactStep.
+//       normalOnly: only the even (normal) rows and columns, the others 0. Keeps W and its factor
+//       Y = L^-1 P S H' in the slot for SpdContactStep.
 //   long SpdContactStep(long handle, real[] rhs, real[int,int] contactTable, real[] tangentFree,
 //                       real[] [omega, tol, maxit, polish], real[] r, real[] u, real[] info)
 //       one condensed contact global step (plugin/core/contact_step.hpp): the free motion of the
@@ -217,7 +217,7 @@ long PsorCondensed(KNM<double>* const& W, KN<double>* const& q, KN<double>* cons
 // on it: the glue's only state (the core holds none). They live until the process ends.
 struct FactorSlot {
   sma::SpdFactor factor;
-  std::unique_ptr<sma::CondensedContact> contact;
+  std::unique_ptr<sma::DelassusFactor> contact;
 };
 std::vector<std::unique_ptr<FactorSlot>>& Factors() {
   static std::vector<std::unique_ptr<FactorSlot>> factors;
@@ -282,9 +282,9 @@ long SpdSolve(long const& handle, KN<double>* const& b, KN<double>* const& x) {
 long SpdDelassus(long const& handle, Matrice_Creuse<double>* const& H, KN<double>* const& free,
                  KNM<double>* const& W, long const& normalOnly) {
   return guarded("SpdDelassus", [&] {
-    auto contact = std::make_unique<sma::CondensedContact>(
-        sma::condensed_contact(FactorAt(handle), ToEigen(H), cview(free), normalOnly != 0));
-    const Eigen::MatrixXd& w = contact->delassus.w;
+    auto contact = std::make_unique<sma::DelassusFactor>(
+        sma::delassus_factor(FactorAt(handle), ToEigen(H), cview(free), normalOnly != 0));
+    const Eigen::MatrixXd& w = contact->w;
     const long k = w.rows();
     W->resize(k, k);
     for (long i = 0; i < k; ++i)

@@ -3,7 +3,8 @@
 // in the back-solves it wrapped (docs/benchmarks.md).
 //
 //   z = L^-1 P rhs                                    (forward half of u_free = K^-1 rhs)
-//   H S u_free = (D^-1 Y)' z                          (Y = L^-1 P S H': delassus_factor)
+//   H S u_free = (D^-1 Y)' z                          (Y = L^-1 P S H': delassus_factor, which
+//                                                      holds all the step needs of H and S)
 //   q_n = -(n.u_free + gap),  q_t = -(t.u_free - t.u_previous) where the node may slide, else 0
 //   r = PSOR on the Delassus problem w = W r - q (psor.hpp; r is the warm start, in/out)
 //   u = P' L^-T D^-1 (z + Y r) = K^-1 (rhs + S H' r)  (backward half; S = diag(free))
@@ -21,39 +22,22 @@
 
 namespace sma {
 
-// The contact rows H (2m x n: (n.u, t.u) per node), the free-dof mask and the Delassus operator
-// W = H S K^-1 S H' with its factor Y (delassus_factor) of one contact problem.
-struct CondensedContact {
-  SparseMatrix h;
-  Eigen::VectorXd free;
-  DelassusFactor delassus;
-};
-
-inline CondensedContact condensed_contact(const SpdFactor& k, const SparseMatrix& h, span<const double> free,
-                                          bool normal_only) {
-  CondensedContact c;
-  c.h = h;
-  c.delassus = delassus_factor(k, h, free, normal_only);
-  c.free = Eigen::Map<const Eigen::VectorXd>(free.begin(), (Eigen::Index)free.size());
-  return c;
-}
-
 struct ContactStepSettings {
   double omega = 1.88, tol = 1e-10;
   int maxit = 100000, polish = 10;
 };
 
 // Per node i: gap[i], threshold[i] (Tresca g), slip_reference[i] (t.u at the step's start),
-// tangent_free[i] (0 where a support blocks the tangential motion). u receives the solution.
-inline PsorResult condensed_global_step(const SpdFactor& k, const CondensedContact& c, span<const double> rhs,
+// tangent_free[i] (0 where a support blocks the tangential motion). d: the contact problem's
+// Delassus operator and factor (delassus_factor, on k). u receives the solution.
+inline PsorResult condensed_global_step(const SpdFactor& k, const DelassusFactor& d, span<const double> rhs,
                                         span<const double> gap, span<const double> threshold,
                                         span<const double> slip_reference, span<const double> tangent_free,
                                         const ContactStepSettings& settings, Eigen::VectorXd& r, span<double> u) {
   const Eigen::Index m = (Eigen::Index)gap.size(), n = k.size();
-  const DelassusFactor& d = c.delassus;
-  if (c.h.rows() != 2 * m || c.h.cols() != n || d.w.rows() != 2 * m || c.free.size() != n || d.y.rows() != n)
-    throw std::invalid_argument("the contact problem has " + std::to_string(c.h.rows() / 2) + " nodes and " +
-                                std::to_string(c.h.cols()) + " dofs, the step " + std::to_string(m) + " and " +
+  if (d.w.rows() != 2 * m || d.y.rows() != n)
+    throw std::invalid_argument("the contact problem has " + std::to_string(d.w.rows() / 2) + " nodes and " +
+                                std::to_string(d.y.rows()) + " dofs, the step " + std::to_string(m) + " and " +
                                 std::to_string(n));
   if ((Eigen::Index)threshold.size() != m || (Eigen::Index)slip_reference.size() != m ||
       (Eigen::Index)tangent_free.size() != m || r.size() != 2 * m)

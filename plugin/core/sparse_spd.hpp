@@ -6,7 +6,7 @@
 // SimplicialLDLT, AMD) on the stiffness and heat matrices, which are symmetric positive definite
 // (docs/parameters.md, "back-solves"; docs/benchmarks.md, "One DC iteration against one
 // back-solve"). The Delassus operator W = H K^-1 H' is formed from sparse
-// forward solves (delassus()), so that no dense n x m matrix K^-1 H' is ever held.
+// forward solves (delassus_factor()), so that no dense n x m matrix K^-1 H' is ever held.
 //
 // Dirichlet rows marked by a huge diagonal (FreeFEM's tgv) stay in the matrix: an LDL' pivot of
 // 1e30 makes their unknowns b_i / 1e30, as FreeFEM's own solvers do.
@@ -212,11 +212,6 @@ inline DelassusFactor delassus_factor(const SpdFactor& a, const SparseMatrix& h,
   for (std::size_t i = 0; i < wanted.size(); ++i)
     for (std::size_t j = 0; j < wanted.size(); ++j) result.w(wanted[i], wanted[j]) = compact(i, j);
   return result;
-}
-
-inline Eigen::MatrixXd delassus(const SpdFactor& a, const SparseMatrix& h, span<const double> free,
-                                bool normal_only) {
-  return delassus_factor(a, h, free, normal_only).w;
 }
 
 }  // namespace sma
