@@ -133,7 +133,6 @@ def run_resumed(a):
 
 def row(a):
     """The table row of one size from its A and its B runs (medians of the B runs)."""
-    shutil.rmtree(a["saved"], ignore_errors=True)
     nr, mesh, out, runs = a["nr"], a["mesh"], a["out"], a["runs"]
     loops = [r[2]["wall_seconds"] for r in runs]
     floors = [r[2]["backsolve_floor_seconds_per_step"] for r in runs]
@@ -196,6 +195,9 @@ def scaling(out_root, quick=False, node_limit=None):
                     print(f"bench: scaling, nr {a['nr']}: {failure}", flush=True)
                     shutil.rmtree(a["saved"], ignore_errors=True)
                     rows[i] = {"nr": a["nr"], "mesh": a["mesh"], "failure": failure}
+    for a in rows:
+        if "saved" in a:
+            shutil.rmtree(a["saved"], ignore_errors=True)
     rows = [row(a) if "runs" in a else a for a in rows]
     return summarise({"steps": steps, "checkpoint": CHECKPOINT, "dt_seconds": 150 / steps, "node_limit": limit,
                       "baseline_rss_MB": baseline, "repeats": REPEATS, "rows": rows})

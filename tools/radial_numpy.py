@@ -85,6 +85,14 @@ def fail(message):
     sys.exit(2)
 
 
+def not_converged(message, keep_going):
+    """A loop that reached its limit: raises, or with keep_going counts it (returns 1), as the
+    scenes' NotConverged (edp/lib/errors.idp) does."""
+    if not keep_going:
+        raise RuntimeError(message)
+    return 1
+
+
 def parse(argv):
     """-name value pairs over DEFAULTS; an unknown name or a bad value fails naming it."""
     p = dict(DEFAULTS)
@@ -309,11 +317,8 @@ def run(p):
                 converged_dc = changed == 0 or (it >= 1 and rel <= dctol)
                 it += 1
             if not converged_dc:
-                msg = (f"DC loop did not converge: {it} iterations, relative displacement change {rel} > "
-                       f"tol {dctol} (step {n + 1})")
-                if not keep_going:
-                    raise RuntimeError(msg)
-                unconverged += 1
+                unconverged += not_converged(f"DC loop did not converge: {it} iterations, relative displacement "
+                                             f"change {rel} > tol {dctol} (step {n + 1})", keep_going)
             dc_total += it
             b_new = np.abs(chi)
             db = b_new - b_seen
@@ -333,11 +338,8 @@ def run(p):
                     b_seen = np.minimum(np.maximum(b_seen, 0.0), 1.0)
                 last_F, last_G = db, b_new
         if not converged_fp:
-            msg = (f"DCT fixed point did not converge: {fp_its} iterations, relative change of T "
-                   f"{fp_residual} > tol {fptol} (step {n + 1})")
-            if not keep_going:
-                raise RuntimeError(msg)
-            unconverged += 1
+            unconverged += not_converged(f"DCT fixed point did not converge: {fp_its} iterations, relative "
+                                         f"change of T {fp_residual} > tol {fptol} (step {n + 1})", keep_going)
         # The step's heat balance: stored = entered through the boundary + latent released.
         S_sum = rhoL / dt * (w_first.dot(b_used - b_start) + w_second.dot(b_used - b_start))
         boundary = dt * (theta * G1.dot(Text_node - T1) + (1 - theta) * G0.dot(Text_node - T))
