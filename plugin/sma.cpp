@@ -92,6 +92,7 @@
 #include "core/contact_step.hpp"
 #include "core/phase_fraction.hpp"
 #include "core/phase_projection.hpp"
+#include "core/step_newton.hpp"
 
 using namespace Fem2D;
 
@@ -331,6 +332,126 @@ long SpdContactStep(long const& handle, KN<double>* const& rhs, KNM<double>* con
   });
 }
 
+// The operators of the fraction model's step solver (StepOperatorsSet), by slot, and the reason
+// the last StepSolveFraction stopped unconverged.
+std::vector<std::unique_ptr<sma::StepProblem>>& StepSlots() {
+  static std::vector<std::unique_ptr<sma::StepProblem>> slots;
+  return slots;
+}
+std::string& StepFailure() {
+  static std::string failure;
+  return failure;
+}
+
+long StepOperatorsSet(long const& handle, Matrice_Creuse<double>* const& B, Matrice_Creuse<double>* const& Q,
+                      Matrice_Creuse<double>* const& interp) {
+  return guarded("StepOperatorsSet", [&] {
+    long slot = handle;
+    if (slot < 0) {
+      StepSlots().push_back(std::make_unique<sma::StepProblem>());
+      slot = (long)StepSlots().size() - 1;
+    }
+    if (slot >= (long)StepSlots().size()) throw std::invalid_argument("no step slot " + std::to_string(slot));
+    sma::StepProblem& p = *StepSlots()[slot];
+    p.load = ToEigen(B);
+    p.latent = ToEigen(Q);
+    p.interp = ToEigen(interp);
+    return slot;
+  });
+}
+
+Eigen::VectorXd Segment(KN<double>* a, long start, long length, const char* what) {
+  if (start + length > a->N())
+    throw std::invalid_argument(std::string(what) + ": " + std::to_string(a->N()) + " values, " +
+                                std::to_string(start + length) + " needed");
+  Eigen::VectorXd v(length);
+  for (long i = 0; i < length; ++i) v[i] = (*a)[start + i];
+  return v;
+}
+
+// One time step of the fraction model (plugin/core/step_newton.hpp). settings = [operator slot,
+// heat factor slot, stiffness factor slot, rho, a, L, T0, Tc, laminate, rho L / dt, tol, maxit,
+// omega, psor tol, psor maxit, polish, slip tol, slip maxit]; data = [area; kappa; threshold
+// offset; chi at the step's start; b_start] (n points each), [heat right side without the
+// latent load; free-node mask] (per heat node), [load f; free-dof mask] (per dof) in one array
+// (FreeFEM's plugin functions take at most 8 arguments); table = contact.idp's contactTable
+// (column 4, the slip thresholds, in/out); contact = [tangentFree; mu; r (2 per node, in/out)];
+// chi in/out; T, u out; stats = [converged, iterations, gradient steps, evaluations, products,
+// heat solves, stiffness solves, PSOR sweeps, slip iterations, residual]. Returns the iterations.
+long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM<double>* const& table,
+                       KN<double>* const& contact, KN<double>* const& chi, KN<double>* const& T,
+                       KN<double>* const& u, KN<double>* const& stats) {
+  return guarded("StepSolveFraction", [&] {
+    if (settings->N() != 18) throw std::invalid_argument("settings must have 18 values");
+    const long slot = lrint((*settings)[0]);
+    if (slot < 0 || slot >= (long)StepSlots().size())
+      throw std::invalid_argument("no step operators in slot " + std::to_string(slot) + " (StepOperatorsSet first)");
+    sma::StepProblem& p = *StepSlots()[slot];
+    FactorSlot& heatSlot = SlotAt(lrint((*settings)[1]));
+    FactorSlot& mechSlot = SlotAt(lrint((*settings)[2]));
+    p.heat = &heatSlot.factor;
+    p.stiffness = &mechSlot.factor;
+    p.contact = mechSlot.contact.get();
+    p.law = sma::ThermalLaw{(*settings)[3], (*settings)[4], (*settings)[5], (*settings)[6], (*settings)[7]};
+    p.laminate = (*settings)[8];
+    p.latent_scale = (*settings)[9];
+    sma::StepSettings set;
+    set.tol = (*settings)[10];
+    set.maxit = (int)lrint((*settings)[11]);
+    p.psor.omega = (*settings)[12];
+    p.psor.tol = (*settings)[13];
+    p.psor.maxit = (int)lrint((*settings)[14]);
+    p.psor.polish = (int)lrint((*settings)[15]);
+    p.slip_tol = (*settings)[16];
+    p.slip_maxit = (int)lrint((*settings)[17]);
+    const long n = chi->N(), nodes = p.heat->size(), dofs = p.stiffness->size(), m = table->N();
+    if (data->N() != 5 * n + 2 * nodes + 2 * dofs)
+      throw std::invalid_argument("data must hold 5 arrays of " + std::to_string(n) + " points, 2 of " +
+                                  std::to_string(nodes) + " heat nodes and 2 of " + std::to_string(dofs) +
+                                  " dofs; it has " + std::to_string(data->N()) + " values");
+    p.area = Segment(data, 0, n, "data");
+    p.kappa = Segment(data, n, n, "data");
+    p.threshold_offset = Segment(data, 2 * n, n, "data");
+    p.chi_start = Segment(data, 3 * n, n, "data");
+    p.b_start = Segment(data, 4 * n, n, "data");
+    p.heat_rhs = Segment(data, 5 * n, nodes, "data");
+    p.heat_mask = Segment(data, 5 * n + nodes, nodes, "data");
+    p.force = Segment(data, 5 * n + 2 * nodes, dofs, "data");
+    p.free = Segment(data, 5 * n + 2 * nodes + dofs, dofs, "data");
+    if (m > 0 && table->M() != 6) throw std::invalid_argument("the contact table must have 6 columns");
+    if (contact->N() != 4 * m) throw std::invalid_argument("contact must hold tangentFree, mu and r of " + std::to_string(m) + " nodes");
+    if (stats->N() != 10) throw std::invalid_argument("stats must have 10 entries");
+    p.gap.resize(m);
+    p.slip_reference.resize(m);
+    Eigen::VectorXd threshold(m);
+    for (long i = 0; i < m; ++i) {
+      p.gap[i] = (*table)(i, 3L);
+      threshold[i] = (*table)(i, 4L);
+      p.slip_reference[i] = (*table)(i, 5L);
+    }
+    p.tangent_free = Segment(contact, 0, m, "contact");
+    p.mu = Segment(contact, m, m, "contact");
+    Eigen::VectorXd r = Segment(contact, 2 * m, 2 * m, "contact");
+    if (!p.contact && m > 0) throw std::invalid_argument("the stiffness slot has no contact problem (SpdDelassus first)");
+    Eigen::VectorXd x = Segment(chi, 0, n, "chi"), temperature(nodes), displacement(dofs);
+    const sma::StepResult res = sma::solve_fraction_step(p, set, x, r, threshold, temperature, displacement);
+    for (long i = 0; i < n; ++i) (*chi)[i] = x[i];
+    if (T->N() != nodes) T->resize(nodes);
+    if (u->N() != dofs) u->resize(dofs);
+    for (long i = 0; i < nodes; ++i) (*T)[i] = temperature[i];
+    for (long i = 0; i < dofs; ++i) (*u)[i] = displacement[i];
+    for (long i = 0; i < m; ++i) (*table)(i, 4L) = threshold[i];
+    for (long i = 0; i < 2 * m; ++i) (*contact)[2 * m + i] = r[i];
+    const double values[10] = {res.converged ? 1.0 : 0.0, (double)res.iterations, (double)res.gradient_steps,
+                               (double)res.evaluations, (double)res.products, (double)res.heat_solves,
+                               (double)res.stiffness_solves, (double)res.psor_sweeps, (double)res.slip_iterations,
+                               res.residual};
+    for (int k = 0; k < 10; ++k) (*stats)[k] = values[k];
+    StepFailure() = res.failure;
+    return (long)res.iterations;
+  });
+}
+
 // Projected SOR on the full stiffness system; the matrix is read in CSR form (a row-major copy
 // through ToEigen: O(nnz) per call).
 long PsorFull(Matrice_Creuse<double>* const& K, KN<double>* const& b, KNM<double>* const& contact,
@@ -378,7 +499,7 @@ long RoundToFloat(KN<double>* const& x) {
   return changed;
 }
 
-double SmaPluginVersion() { return 6.0; }
+double SmaPluginVersion() { return 7.0; }
 
 // FreeFEM's time() has a resolution of one second and clock() counts CPU time; timings of the
 // scenes are wall-clock seconds from a monotonic clock.
@@ -388,6 +509,10 @@ double WallSeconds() {
 }
 
 string* NewString(Stack stack, const std::string& text) { return Add2StackOfPtr2Free(stack, new string(text)); }
+
+// The reason the last StepSolveFraction stopped unconverged ("" after a converged step); the
+// argument is unused (FreeFEM's string functions of no argument need a Stack-less form).
+string* StepFailureMessage(Stack stack, long const&) { return NewString(stack, StepFailure()); }
 
 string* FileMakeDirectory(Stack stack, string* const& path) {
   return NewString(stack, sma::files::make_directory(*path));
@@ -473,11 +598,17 @@ static void Load_Init() {
              new OneOperator5_<long, long, Matrice_Creuse<double>*, A, KNM<double>*, long>(SpdDelassus));
   Global.Add("SpdContactStep", "(",
              new OneOperator8_<long, long, A, KNM<double>*, A, A, A, A, A>(SpdContactStep));
+  Global.Add("StepOperatorsSet", "(",
+             new OneOperator4_<long, long, Matrice_Creuse<double>*, Matrice_Creuse<double>*,
+                               Matrice_Creuse<double>*>(StepOperatorsSet));
+  Global.Add("StepSolveFraction", "(",
+             new OneOperator8_<long, A, A, KNM<double>*, A, A, A, A, A>(StepSolveFraction));
   Global.Add("AuchmutyLocal", "(", new OneOperator5_<double, A, A, A, A, A>(AuchmutyLocal));
   Global.Add("RoundToFloat", "(", new OneOperator1_<long, A>(RoundToFloat));
   Global.Add("SmaPluginVersion", "(", new OneOperator0<double>(SmaPluginVersion));
   Global.Add("WallSeconds", "(", new OneOperator0<double>(WallSeconds));
   typedef string* S;
+  Global.Add("StepFailureMessage", "(", new OneOperator1s_<S, long>(StepFailureMessage));
   Global.Add("FileMakeDirectory", "(", new OneOperator1s_<S, S>(FileMakeDirectory));
   Global.Add("FileRename", "(", new OneOperator2s_<S, S, S>(FileRename));
   Global.Add("FileRemoveMatching", "(", new OneOperator2s_<S, S, S>(FileRemoveMatching));

@@ -1,0 +1,737 @@
+// One time step of the fraction model solved as one nonsmooth system (-stepsolver newton): the
+// heat solve, the law at the points, the mechanics with Signorini-Coulomb contact and the
+// fractions' complementarity, all at once, by a globalised projected Newton method.
+//
+// The step's unknowns are the martensite fractions beta = |chi| per point (the sign is the
+// strain trace's). Given beta, the rest is a function of it:
+//   T     = H^-1 (heat_rhs + mask .* latent (beta - b_start))     (the theta step; linear)
+//   alpha, c at the points (Interp T), q = alpha^2 / laminate, drive = alpha |tr e| - c
+//   u     the Signorini-Coulomb solution of K u = f + B (alpha chi) + H' r (the condensed contact
+//         problem of contact_step.hpp, the slip thresholds g = mu r_n to their fixed point)
+// and the step is solved when every point satisfies Frémond's law with the laminate band of
+// phase_fraction.hpp at the converged temperature:
+//   beta = clamp(clamp(held, drive / q, drive / q + 1), 0, 1),     held = the fraction at the
+//   step's start (of this variant),
+// which is the fixed point the nested loops of dct.idp converge to (their enthalpy regularisation
+// vanishes there). Stopping criterion: the residual F = chi - sign(tr e) beta_target, in
+// fraction units, max_i |F_i| <= tol, each evaluation solving the heat exactly (a back-solve)
+// and the contact problem to its PSOR and slip-threshold tolerances.
+//
+// Why not the nested fixed point: its contraction factor is set by a nearly neutral mode (the
+// partly transformed zone's eigenstrain against its own mechanical response through the contact:
+// on the paper's scale the step's Jacobian has eigenvalues down to 7e-6 of its largest), so it
+// crawls for hundreds of iterations. The step is instead, to 0.1 % (the measured asymmetry of its
+// Jacobian, from alpha(T)), the stationarity condition of an incremental energy
+//   W(beta) = Pi(alpha beta) + sum_i area_i (c_i beta_i + q_i beta_i^2 / 2 + psi_i(beta_i - held_i))
+//             + (rho L / T0) / 2 beta' A Interp H^-1 latent beta
+// (Pi the contact-mechanical energy, concave in the eigenstress: the paper's DC structure;
+// psi_i(x) = q_i max(-x, 0) the laminate's dissipation; the heat quadratic convex), with
+// -dW/dbeta_i = area_i f_i, f = drive - q beta (+ q on the reverting side of held). Each iteration:
+//   1. classify the points: free in their interval [0, held] or [held, 1], or bound at 0, held,
+//      1 when the force pushes them outward;
+//   2. Newton on the free points: (-df/dbeta)_FF d_F = f_F, by GMRES on the exact linearisation
+//      (a heat back-solve and a stiffness back-solve per product, the contact statuses frozen);
+//      points whose Newton move leaves their interval are pinned to its end and the free system
+//      solved again (a primal-dual active-set loop, at most `pdas_rounds` rounds, stopped when its
+//      pinned set repeats). GMRES's Ritz values must all have a positive real part (the free
+//      block is stable, so the step is a descent direction of W); otherwise, or when the move is
+//      not a descent direction, the gradient step below is taken instead;
+//   3. line search along the move projected on the intervals, Armijo on W, whose change is
+//      measured by the trapezoid rule on the forces at both ends (exact for a quadratic W: no
+//      energy is evaluated);
+//   4. fall-back, always a descent direction: the preconditioned gradient step
+//      d = f / (D + q), D = (rho a |tr e| [alpha > 0] + rho L / T0) kappa, which is the nested
+//      loops' enthalpy-regularised local step; with the line search it decreases W at every
+//      iteration, so the iteration cannot cycle.
+// Measured on the radial model (tools/step_newton_1d.py, docs/benchmarks.md): 2.8 iterations per
+// transforming step on average (at most 4) on the project's scale, 3.5 (at most 11) on the
+// paper's, where the nested loops take 59 (127) and 109 (220).
+#pragma once
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cmath>
+#include <complex>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "contact_step.hpp"
+#include "material.hpp"
+#include "psor.hpp"
+#include "sparse_spd.hpp"
+
+namespace sma {
+
+// What stays fixed over a time step (the operators over a whole run).
+struct StepProblem {
+  // Heat: T = heat^-1 (heat_rhs + heat_mask .* latent (beta - b_start)).
+  const SpdFactor* heat = nullptr;
+  Eigen::VectorXd heat_rhs, heat_mask;
+  SparseMatrix latent;  // nodes x points: int s phi_i (the P0 -> P1 load)
+  double latent_scale = 1.0;  // rho L / dt
+  SparseMatrix interp;  // points x nodes: T at the points
+  // Mechanics: rhs = (f + B s) .* free, tr e = (B' u) ./ area.
+  const SpdFactor* stiffness = nullptr;
+  const DelassusFactor* contact = nullptr;  // null: no contact
+  SparseMatrix load;                        // dofs x points: B
+  Eigen::VectorXd area, force, free;
+  // Contact, per node: gap, t.u at the step's start, 0 where a support blocks the tangential
+  // motion, the Coulomb coefficient.
+  Eigen::VectorXd gap, slip_reference, tangent_free, mu;
+  ContactStepSettings psor;
+  double slip_tol = 1e-9;
+  int slip_maxit = 200;
+  // The law: c gets threshold_offset added (empty: none); laminate = lambda + 2 mu.
+  ThermalLaw law{};
+  double laminate = 0.0;
+  Eigen::VectorXd threshold_offset;
+  Eigen::VectorXd kappa;  // K per unit fraction (the gradient step's preconditioner)
+  // The step's start: chi (the held fractions) and the fractions its heat load starts from.
+  Eigen::VectorXd chi_start, b_start;
+};
+
+struct StepSettings {
+  double tol = 1e-8;    // max |F| (fraction units)
+  int maxit = 50;       // iterations (each: one Newton or gradient move)
+  int gmres_maxit = 300;
+  int pdas_rounds = 12;
+};
+
+struct StepResult {
+  bool converged = false;
+  int iterations = 0, gradient_steps = 0, curvature_steps = 0, evaluations = 0, products = 0;
+  int heat_solves = 0, stiffness_solves = 0, psor_sweeps = 0, slip_iterations = 0;
+  double residual = 0.0;
+  std::string failure;  // why it stopped unconverged (empty when converged)
+};
+
+// The state at one iterate chi: everything the step's equations give for it.
+struct StepState {
+  Eigen::VectorXd chi, T, alpha, c, q, u, trace, sign, held, drive, residual;
+  Eigen::VectorXd r, threshold;  // contact reactions (n, t interleaved) and slip thresholds
+  // Frozen contact statuses for the linearisation: the unknowns of the contact rows that move
+  // (active normal rows, sticking tangential rows), the factorised system on them, the sliding
+  // nodes' direction (+-1, 0 for none).
+  std::vector<int> moving;
+  std::vector<double> slide;
+  Eigen::PartialPivLU<Eigen::MatrixXd> statuses;
+  double residual_norm = 0.0;
+};
+
+namespace step_detail {
+
+inline Eigen::Map<const Eigen::VectorXd> as_vector(span<const double> s) {
+  return Eigen::Map<const Eigen::VectorXd>(s.begin(), (Eigen::Index)s.size());
+}
+
+// GMRES from x = 0 (no restart) on a linear operator; the Ritz values of its Hessenberg matrix
+// tell whether the operator has an eigenvalue of non-positive real part in the Krylov space.
+struct GmresResult {
+  Eigen::VectorXd x;
+  int iterations = 0;
+  double smallest_ritz_real = 1.0;
+  Eigen::VectorXd smallest_ritz_vector;  // its Ritz vector (real part, unit length)
+  bool finite = true;
+};
+template <class Op>
+GmresResult gmres(const Op& apply, const Eigen::VectorXd& b, double rtol, int maxit) {
+  GmresResult out;
+  const Eigen::Index n = b.size();
+  out.x = Eigen::VectorXd::Zero(n);
+  const double beta = b.norm();
+  if (n == 0 || beta == 0.0) return out;
+  const int m = (int)std::min<Eigen::Index>(maxit, n);
+  Eigen::MatrixXd V(n, m + 1), H = Eigen::MatrixXd::Zero(m + 1, m);
+  Eigen::VectorXd cs = Eigen::VectorXd::Zero(m), sn = Eigen::VectorXd::Zero(m), g = Eigen::VectorXd::Zero(m + 1);
+  V.col(0) = b / beta;
+  g[0] = beta;
+  int k = 0;
+  for (; k < m; ++k) {
+    Eigen::VectorXd w = apply(V.col(k));
+    for (int j = 0; j <= k; ++j) {  // modified Gram-Schmidt
+      H(j, k) = w.dot(V.col(j));
+      w -= H(j, k) * V.col(j);
+    }
+    H(k + 1, k) = w.norm();
+    const bool breakdown = !(H(k + 1, k) > 1e-14 * beta);
+    if (!breakdown) V.col(k + 1) = w / H(k + 1, k);
+    // The least-squares residual, by Givens rotations of a copy of column k.
+    Eigen::VectorXd col = H.col(k).head(k + 2);
+    for (int j = 0; j < k; ++j) {
+      const double t = cs[j] * col[j] + sn[j] * col[j + 1];
+      col[j + 1] = -sn[j] * col[j] + cs[j] * col[j + 1];
+      col[j] = t;
+    }
+    const double rr = std::hypot(col[k], col[k + 1]);
+    cs[k] = rr > 0 ? col[k] / rr : 1.0;
+    sn[k] = rr > 0 ? col[k + 1] / rr : 0.0;
+    g[k + 1] = -sn[k] * g[k];
+    g[k] = cs[k] * g[k];
+    if (breakdown || std::fabs(g[k + 1]) <= rtol * beta) {
+      ++k;
+      break;
+    }
+  }
+  out.iterations = k;
+  // y from the Hessenberg least-squares problem (small: solved directly).
+  const Eigen::MatrixXd Hk = H.topLeftCorner(k + 1, k);
+  Eigen::VectorXd e1 = Eigen::VectorXd::Zero(k + 1);
+  e1[0] = beta;
+  const Eigen::VectorXd y = Hk.colPivHouseholderQr().solve(e1);
+  out.x = V.leftCols(k) * y;
+  out.finite = out.x.allFinite();
+  if (k > 0) {
+    const Eigen::EigenSolver<Eigen::MatrixXd> eig(H.topLeftCorner(k, k), true);
+    Eigen::Index which = 0;
+    for (Eigen::Index i = 1; i < eig.eigenvalues().size(); ++i)
+      if (eig.eigenvalues()[i].real() < eig.eigenvalues()[which].real()) which = i;
+    out.smallest_ritz_real = eig.eigenvalues()[which].real();
+    out.smallest_ritz_vector = V.leftCols(k) * eig.eigenvectors().col(which).real();
+    const double norm = out.smallest_ritz_vector.norm();
+    if (norm > 0) out.smallest_ritz_vector /= norm;
+  }
+  return out;
+}
+
+}  // namespace step_detail
+
+class StepSolver {
+ public:
+  StepSolver(const StepProblem& p, StepResult& stats) : p_(p), stats_(stats) { check(); }
+
+  // The state at chi, with the contact reactions started from r0 (a warm start) and the slip
+  // thresholds from threshold0.
+  StepState evaluate(const Eigen::VectorXd& chi, const Eigen::VectorXd& r0, const Eigen::VectorXd& threshold0) {
+    ++stats_.evaluations;
+    StepState s;
+    s.chi = chi;
+    const Eigen::Index n = chi.size();
+    const Eigen::VectorXd beta = chi.cwiseAbs();
+    // Heat.
+    Eigen::VectorXd rhs = p_.heat_rhs + p_.heat_mask.cwiseProduct(p_.latent_scale * (p_.latent * (beta - p_.b_start)));
+    s.T.resize(rhs.size());
+    heat_solve(rhs, s.T);
+    const Eigen::VectorXd Tq = p_.interp * s.T;
+    s.alpha.resize(n);
+    s.c.resize(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      s.alpha[i] = p_.law.alpha(Tq[i]);
+      s.c[i] = p_.law.c(Tq[i]) + (p_.threshold_offset.size() ? p_.threshold_offset[i] : 0.0);
+    }
+    s.q = s.alpha.cwiseProduct(s.alpha) / p_.laminate;
+    // Mechanics with contact.
+    Eigen::VectorXd mech = (p_.force + p_.load * s.alpha.cwiseProduct(chi)).cwiseProduct(p_.free);
+    s.r = r0;
+    s.threshold = threshold0;
+    s.u.resize(mech.size());
+    contact_solve(mech, s);
+    s.trace = (p_.load.transpose() * s.u).cwiseQuotient(p_.area);
+    // The law.
+    s.sign.resize(n);
+    s.held.resize(n);
+    s.drive.resize(n);
+    s.residual.resize(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double t = s.trace[i];
+      s.sign[i] = t > 0 ? 1.0 : t < 0 ? -1.0 : (chi[i] < 0 ? -1.0 : 1.0);
+      s.held[i] = std::max(p_.chi_start[i] * s.sign[i], 0.0);
+      s.drive[i] = s.alpha[i] * std::fabs(t) - s.c[i];
+      s.residual[i] = chi[i] - s.sign[i] * target(s, i);
+    }
+    s.residual_norm = n ? s.residual.lpNorm<Eigen::Infinity>() : 0.0;
+    return s;
+  }
+
+  // The fraction magnitude Frémond's law with the laminate band gives point i at state s.
+  static double target(const StepState& s, Eigen::Index i) {
+    const double q = s.q[i], drive = s.drive[i], held = s.held[i];
+    if (!(q > 0)) return drive > 0 ? 1.0 : drive < 0 ? 0.0 : held;
+    const double lower = drive / q;
+    return std::clamp(std::clamp(held, lower, lower + 1.0), 0.0, 1.0);
+  }
+
+  // d f / d beta along w at state s (f = drive - q beta, + q where `upper`): one heat and one
+  // stiffness back-solve, the contact statuses of s frozen.
+  Eigen::VectorXd force_derivative(const StepState& s, const Eigen::VectorXd& w,
+                                   const std::vector<char>& upper) {
+    ++stats_.products;
+    const Eigen::Index n = w.size();
+    Eigen::VectorXd dT(p_.heat_rhs.size());
+    heat_solve(p_.heat_mask.cwiseProduct(p_.latent_scale * (p_.latent * w)), dT);
+    const Eigen::VectorXd dTq = p_.interp * dT;
+    Eigen::VectorXd dalpha(n), dc(n), ds(n);
+    const double rhoa = p_.law.rho * p_.law.a, latent_slope = p_.law.rho * p_.law.latent / p_.law.T0;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      dalpha[i] = s.alpha[i] > 0 ? -rhoa * dTq[i] : 0.0;
+      dc[i] = latent_slope * dTq[i];
+      ds[i] = dalpha[i] * s.chi[i] + s.alpha[i] * s.sign[i] * w[i];
+    }
+    const Eigen::VectorXd dmech = (p_.load * ds).cwiseProduct(p_.free);
+    Eigen::VectorXd du(dmech.size());
+    contact_linear(s, dmech, du);
+    const Eigen::VectorXd dtrace = (p_.load.transpose() * du).cwiseQuotient(p_.area);
+    const Eigen::VectorXd beta = s.chi.cwiseAbs();
+    Eigen::VectorXd out(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double ddrive = dalpha[i] * std::fabs(s.trace[i]) + s.alpha[i] * s.sign[i] * dtrace[i] - dc[i];
+      const double dq = 2.0 * s.alpha[i] * dalpha[i] / p_.laminate;
+      out[i] = ddrive - s.q[i] * w[i] - dq * beta[i] + (upper[i] ? dq : 0.0);
+    }
+    return out;
+  }
+
+  // Solves the step from chi (in/out), contact reactions r and thresholds (in/out); T and u
+  // receive the final state's temperature and displacement.
+  void solve(const StepSettings& set, Eigen::VectorXd& chi, Eigen::VectorXd& r, Eigen::VectorXd& threshold,
+             Eigen::VectorXd& T, Eigen::VectorXd& u) {
+    StepState s = evaluate(chi, r, threshold);
+    double best = s.residual_norm;  // the smallest residual so far (the line search's watchdog)
+    while (s.residual_norm > set.tol && stats_.iterations < set.maxit) {
+      ++stats_.iterations;
+      const Eigen::VectorXd beta = s.chi.cwiseAbs();
+      Classified cl = classify(s, beta);
+      Eigen::VectorXd d;
+      const Move tried = newton_direction(s, beta, cl, set, d);
+      Search found;
+      if (tried == Newton) found = line_search(s, beta, cl, d, set.tol, best, true);
+      if (tried == NegativeCurvature) {
+        // Both the move along the unstable directions and the gradient step (each lowers W);
+        // the one that leaves the smaller residual.
+        ++stats_.curvature_steps;
+        found = line_search(s, beta, cl, d, set.tol, best, false);
+      }
+      if (!(tried == Newton && found.ok)) {
+        ++stats_.gradient_steps;
+        Search gradient = line_search(s, beta, cl, gradient_direction(s, cl), set.tol, best, false);
+        if (gradient.ok && (!found.ok || gradient.state.residual_norm < found.state.residual_norm))
+          found = std::move(gradient);
+      }
+      if (!found.ok) {
+        stats_.failure = "the line search found no decrease of the step's energy";
+        break;
+      }
+      s = std::move(found.state);
+      best = std::min(best, s.residual_norm);
+      if (std::getenv("SMA_STEP_TRACE")) {
+        int nfree = 0;
+        for (char f : cl.free) nfree += f;
+        std::fprintf(stderr, "step it %d %s residual %.3e free %d evals %d products %d\n", stats_.iterations,
+                     tried == Newton ? "newton" : tried == NegativeCurvature ? "curvature" : "gradient", s.residual_norm, nfree, stats_.evaluations, stats_.products);
+      }
+    }
+    stats_.residual = s.residual_norm;
+    stats_.converged = s.residual_norm <= set.tol;
+    if (!stats_.converged && stats_.failure.empty())
+      stats_.failure = std::to_string(stats_.iterations) + " iterations";
+    chi = s.chi;
+    r = s.r;
+    threshold = s.threshold;
+    T = s.T;
+    u = s.u;
+  }
+
+ private:
+  struct Classified {
+    std::vector<char> free, upper;
+    Eigen::VectorXd force, lo, hi;
+  };
+
+  void check() const {
+    const Eigen::Index n = p_.area.size();
+    if (!p_.heat || !p_.stiffness) throw std::invalid_argument("step: the heat and stiffness factors are required");
+    const Eigen::Index nodes = p_.heat->size(), dofs = p_.stiffness->size();
+    auto need = [](bool ok, const std::string& what) {
+      if (!ok) throw std::invalid_argument("step: " + what);
+    };
+    need(p_.heat_rhs.size() == nodes && p_.heat_mask.size() == nodes, "heat right side and mask of the heat matrix's size");
+    need(p_.latent.rows() == nodes && p_.latent.cols() == n, "latent load: nodes x points");
+    need(p_.interp.rows() == n && p_.interp.cols() == nodes, "interpolation: points x nodes");
+    need(p_.load.rows() == dofs && p_.load.cols() == n, "load operator B: dofs x points");
+    need(p_.force.size() == dofs && p_.free.size() == dofs, "load and dof mask of the stiffness's size");
+    need(p_.kappa.size() == n && p_.chi_start.size() == n && p_.b_start.size() == n, "per-point data of one length");
+    need(p_.threshold_offset.size() == 0 || p_.threshold_offset.size() == n, "threshold offset per point (or none)");
+    need(p_.laminate > 0, "the laminate modulus lambda + 2 mu must be > 0");
+    for (Eigen::Index i = 0; i < n; ++i) need(p_.area[i] > 0, "point " + std::to_string(i) + " has no area");
+    p_.law.validate();
+    if (p_.contact) {
+      const Eigen::Index m = p_.gap.size();
+      need(p_.contact->w.rows() == 2 * m && p_.contact->y.rows() == dofs, "contact problem of the step's sizes");
+      need(p_.slip_reference.size() == m && p_.tangent_free.size() == m && p_.mu.size() == m,
+           "per-contact-node data of one length");
+      need(p_.slip_tol >= 0 && p_.slip_maxit >= 1, "slip-threshold tolerance >= 0 and limit >= 1");
+    }
+  }
+
+  void heat_solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) {
+    ++stats_.heat_solves;
+    p_.heat->solve(span<const double>(rhs.data(), (std::size_t)rhs.size()), span<double>(x.data(), (std::size_t)x.size()));
+  }
+
+  bool friction() const { return p_.contact && p_.mu.size() && p_.mu.maxCoeff() > 0; }
+
+  // Signorini-Coulomb on the condensed problem for the right side `mech`: one forward solve, the
+  // PSOR (inside the slip-threshold fixed point g = mu r_n when there is friction), one backward
+  // solve; then the statuses for the linearisation.
+  void contact_solve(const Eigen::VectorXd& mech, StepState& s) {
+    ++stats_.stiffness_solves;
+    span<const double> rhs(mech.data(), (std::size_t)mech.size());
+    if (!p_.contact) {
+      p_.stiffness->solve(rhs, span<double>(s.u.data(), (std::size_t)s.u.size()));
+      return;
+    }
+    const DelassusFactor& d = *p_.contact;
+    const Eigen::Index m = p_.gap.size();
+    Eigen::VectorXd z = p_.stiffness->forward(rhs);
+    const Eigen::VectorXd motion = d.y_scaled.transpose() * z;
+    Eigen::VectorXd hu = Eigen::VectorXd::Zero(2 * m), q(2 * m);
+    for (std::size_t j = 0; j < d.rows.size(); ++j) hu[d.rows[j]] = motion[(Eigen::Index)j];
+    for (Eigen::Index i = 0; i < m; ++i) {
+      q[2 * i] = -(hu[2 * i] + p_.gap[i]);
+      q[2 * i + 1] = tangential(i) ? -(hu[2 * i + 1] - p_.slip_reference[i]) : 0.0;
+    }
+    if (!friction()) {
+      run_psor(q, s);
+    } else {
+      update_thresholds(s);
+      int it = 0;
+      double change = 0;
+      while (it < p_.slip_maxit) {
+        ++it;
+        run_psor(q, s);
+        change = update_thresholds(s);
+        if (change <= p_.slip_tol) break;
+      }
+      stats_.slip_iterations += it;
+      if (change > p_.slip_tol)
+        throw std::runtime_error("slip-threshold fixed point (Coulomb) did not converge: " + std::to_string(it) +
+                                 " iterations, relative change of g " + std::to_string(change) + " > tol " +
+                                 std::to_string(p_.slip_tol));
+    }
+    if (s.r.lpNorm<Eigen::Infinity>() > 0) {
+      Eigen::VectorXd reactions((Eigen::Index)d.rows.size());
+      for (std::size_t j = 0; j < d.rows.size(); ++j) reactions[(Eigen::Index)j] = s.r[d.rows[j]];
+      z += d.y * reactions;
+    }
+    p_.stiffness->backward(z, span<double>(s.u.data(), (std::size_t)s.u.size()));
+    freeze_statuses(s);
+  }
+
+  bool tangential(Eigen::Index i) const {
+    return p_.tangent_free[i] != 0 && p_.contact->w(2 * i + 1, 2 * i + 1) != 0.0;
+  }
+
+  void run_psor(const Eigen::VectorXd& q, StepState& s) {
+    const PsorResult res = psor_condensed(p_.contact->w, q, s.threshold, p_.psor.omega, p_.psor.tol, p_.psor.maxit,
+                                          s.r, p_.psor.polish);
+    stats_.psor_sweeps += res.iterations;
+    if (!res.converged)
+      throw std::runtime_error("contact: PSOR (condensed) did not converge: " + std::to_string(res.iterations) +
+                               " sweeps, relative change " + std::to_string(res.residual) + " > tol " +
+                               std::to_string(p_.psor.tol) + " (raise -psormaxit or check omega)");
+  }
+
+  // g = mu r_n (0 where the tangential motion is blocked); the relative change, as contact.idp's
+  // ContactUpdateThresholds.
+  double update_thresholds(StepState& s) const {
+    const Eigen::Index m = p_.gap.size();
+    double change = 0, size = 0;
+    for (Eigen::Index i = 0; i < m; ++i) {
+      const double g = p_.mu[i] * std::max(0.0, s.r[2 * i]) * p_.tangent_free[i];
+      change = std::max(change, std::fabs(g - s.threshold[i]));
+      size = std::max(size, g);
+      s.threshold[i] = g;
+    }
+    return size > 0 ? change / size : change;
+  }
+
+  // The contact rows that move under a small change of the load, at the statuses of s: active
+  // normal rows (r_n > 0) and sticking tangential rows (|r_t| < g) keep their motion at zero;
+  // a sliding node's r_t follows its r_n (r_t = +-mu r_n); the others stay at zero.
+  void freeze_statuses(StepState& s) const {
+    const Eigen::MatrixXd& W = p_.contact->w;
+    const Eigen::Index m = p_.gap.size();
+    s.moving.clear();
+    s.slide.assign((std::size_t)m, 0.0);
+    for (Eigen::Index i = 0; i < m; ++i) {
+      if (!(s.r[2 * i] > 0)) continue;
+      s.moving.push_back((int)(2 * i));
+      if (!tangential(i) || !(s.threshold[i] > 0)) continue;
+      if (std::fabs(s.r[2 * i + 1]) < s.threshold[i] * (1 - 1e-9)) s.moving.push_back((int)(2 * i + 1));
+      else s.slide[(std::size_t)i] = s.r[2 * i + 1] > 0 ? 1.0 : -1.0;
+    }
+    const Eigen::Index k = (Eigen::Index)s.moving.size();
+    if (k == 0) return;
+    Eigen::MatrixXd A(k, k);
+    for (Eigen::Index a = 0; a < k; ++a)
+      for (Eigen::Index b = 0; b < k; ++b) {
+        const int row = s.moving[(std::size_t)a], col = s.moving[(std::size_t)b];
+        double v = W(row, col);
+        if (col % 2 == 0 && s.slide[(std::size_t)(col / 2)] != 0.0)
+          v += W(row, col + 1) * s.slide[(std::size_t)(col / 2)] * p_.mu[col / 2];
+        A(a, b) = v;
+      }
+    s.statuses.compute(A);
+  }
+
+  // du = d u / d mech (the linearised contact step): forward, the moving rows' reactions, backward.
+  void contact_linear(const StepState& s, const Eigen::VectorXd& dmech, Eigen::VectorXd& du) {
+    ++stats_.stiffness_solves;
+    span<const double> rhs(dmech.data(), (std::size_t)dmech.size());
+    if (!p_.contact) {
+      p_.stiffness->solve(rhs, span<double>(du.data(), (std::size_t)du.size()));
+      return;
+    }
+    const DelassusFactor& d = *p_.contact;
+    Eigen::VectorXd z = p_.stiffness->forward(rhs);
+    const Eigen::Index k = (Eigen::Index)s.moving.size();
+    if (k > 0) {
+      const Eigen::VectorXd motion = d.y_scaled.transpose() * z;
+      Eigen::VectorXd hu = Eigen::VectorXd::Zero(p_.contact->w.rows());
+      for (std::size_t j = 0; j < d.rows.size(); ++j) hu[d.rows[j]] = motion[(Eigen::Index)j];
+      Eigen::VectorXd b(k);
+      for (Eigen::Index a = 0; a < k; ++a) b[a] = -hu[s.moving[(std::size_t)a]];  // W dr = dq = -d(H u_free)
+      const Eigen::VectorXd x = s.statuses.solve(b);
+      Eigen::VectorXd dr = Eigen::VectorXd::Zero(p_.contact->w.rows());
+      for (Eigen::Index a = 0; a < k; ++a) {
+        const int row = s.moving[(std::size_t)a];
+        dr[row] = x[a];
+        if (row % 2 == 0 && s.slide[(std::size_t)(row / 2)] != 0.0)
+          dr[row + 1] = s.slide[(std::size_t)(row / 2)] * p_.mu[row / 2] * x[a];
+      }
+      Eigen::VectorXd reactions((Eigen::Index)d.rows.size());
+      for (std::size_t j = 0; j < d.rows.size(); ++j) reactions[(Eigen::Index)j] = dr[d.rows[j]];
+      z += d.y * reactions;
+    }
+    p_.stiffness->backward(z, span<double>(du.data(), (std::size_t)du.size()));
+  }
+
+  // Per point: free (may move) or bound, the force it feels in its interval, the interval.
+  Classified classify(const StepState& s, const Eigen::VectorXd& beta) const {
+    const Eigen::Index n = beta.size();
+    Classified cl;
+    cl.free.assign((std::size_t)n, 0);
+    cl.upper.assign((std::size_t)n, 0);
+    cl.force = Eigen::VectorXd::Zero(n);
+    cl.lo = Eigen::VectorXd::Zero(n);
+    cl.hi = Eigen::VectorXd::Ones(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double q = s.q[i], held = s.held[i], b = beta[i];
+      if (!(q > 0)) continue;  // alpha = 0: the law has no free fraction (the target is 0 or 1)
+      const double f = s.drive[i] - q * b;
+      const double right = f + (b < held ? q : 0.0), left = f + (b <= held ? q : 0.0);
+      bool free = false;
+      double force = 0, lo = 0, hi = 1;
+      if (b <= 0) {
+        free = right > 0, force = std::max(right, 0.0), lo = 0, hi = held > 0 ? held : 1.0;
+      } else if (b >= 1) {
+        free = left < 0, force = std::min(left, 0.0), lo = held < 1 ? held : 0.0, hi = 1;
+      } else if (b == held) {
+        if (right > 0) free = true, force = right, lo = held, hi = 1;
+        else if (left < 0) free = true, force = left, lo = 0, hi = held;
+      } else if (b > held) {
+        free = true, force = f, lo = held, hi = 1;
+      } else {
+        free = true, force = f + q, lo = 0, hi = held;
+      }
+      cl.free[(std::size_t)i] = free;
+      cl.force[i] = force;
+      cl.lo[i] = lo;
+      cl.hi[i] = hi;
+      cl.upper[(std::size_t)i] = hi == held;
+    }
+    return cl;
+  }
+
+  enum Move { Gradient = 0, Newton = 1, NegativeCurvature = 2 };
+  // The Newton move on the free points (header, step 2): rounds of an active-set method on the
+  // linearised step, from the model point d (the move so far; model = the linearised force there):
+  //   - GMRES on the free, unpinned points gives the Newton correction from d;
+  //   - a stable block (every Ritz value with a positive real part): d += correction; the points
+  //     that leave their interval are pinned to its end, pinned points whose model force points
+  //     back inside are released; the rounds stop when nothing changes or the pinned set repeats;
+  //   - an unstable block (W concave along its Ritz vector v; a snap of part of the front): d
+  //     moves along v, the way the model force pushes, until the first point reaches the end of
+  //     its interval, where it is pinned (the active-set method of nonconvex quadratic programs).
+  // Newton: the rounds ended on a stable block and d is a descent direction of W;
+  // NegativeCurvature: they ran out on an unstable block and d is a descent direction; Gradient
+  // otherwise.
+  Move newton_direction(const StepState& s, const Eigen::VectorXd& beta, const Classified& cl,
+                        const StepSettings& set, Eigen::VectorXd& d) {
+    const Eigen::Index n = beta.size();
+    d = Eigen::VectorXd::Zero(n);
+    std::vector<char> pinned((std::size_t)n, 0);
+    std::vector<std::vector<char>> seen;
+    bool any_free = false;
+    for (Eigen::Index i = 0; i < n; ++i) any_free |= cl.free[(std::size_t)i] != 0;
+    if (!any_free) return Gradient;
+    const double rtol = std::max(1e-12, std::min(1e-2, s.residual_norm));
+    bool stable = false;
+    Eigen::VectorXd model = cl.force;
+    for (int round = 0; round < set.pdas_rounds; ++round) {
+      std::vector<Eigen::Index> sub;
+      for (Eigen::Index i = 0; i < n; ++i)
+        if (cl.free[(std::size_t)i] && !pinned[(std::size_t)i]) sub.push_back(i);
+      if (sub.empty()) {
+        stable = true;
+        break;
+      }
+      const Eigen::Index k = (Eigen::Index)sub.size();
+      Eigen::VectorXd rhs(k), scale(k);
+      for (Eigen::Index a = 0; a < k; ++a) {
+        scale[a] = s.q[sub[(std::size_t)a]];
+        rhs[a] = model[sub[(std::size_t)a]] / scale[a];
+      }
+      auto apply = [&](const Eigen::VectorXd& x) {
+        Eigen::VectorXd full = Eigen::VectorXd::Zero(n);
+        for (Eigen::Index a = 0; a < k; ++a) full[sub[(std::size_t)a]] = x[a];
+        const Eigen::VectorXd df = force_derivative(s, full, cl.upper);
+        Eigen::VectorXd out(k);
+        for (Eigen::Index a = 0; a < k; ++a) out[a] = -df[sub[(std::size_t)a]] / scale[a];
+        return out;
+      };
+      const step_detail::GmresResult g = step_detail::gmres(apply, rhs, rtol, set.gmres_maxit);
+      if (!g.finite) return Gradient;
+      if (!(g.smallest_ritz_real > 0)) {
+        stable = false;
+        if (g.smallest_ritz_vector.size() != k) return Gradient;
+        Eigen::VectorXd v = g.smallest_ritz_vector;
+        double slope = 0;
+        for (Eigen::Index a = 0; a < k; ++a) slope += model[sub[(std::size_t)a]] * p_.area[sub[(std::size_t)a]] * v[a];
+        if (slope < 0) v = -v;
+        double reach = std::numeric_limits<double>::infinity();
+        Eigen::Index first = -1;
+        double end = 0;
+        for (Eigen::Index a = 0; a < k; ++a) {
+          const Eigen::Index i = sub[(std::size_t)a];
+          const double at = beta[i] + d[i];
+          if (v[a] > 0 && (cl.hi[i] - at) / v[a] < reach) reach = (cl.hi[i] - at) / v[a], first = i, end = cl.hi[i];
+          if (v[a] < 0 && (cl.lo[i] - at) / v[a] < reach) reach = (cl.lo[i] - at) / v[a], first = i, end = cl.lo[i];
+        }
+        if (first < 0 || !std::isfinite(reach)) return Gradient;
+        for (Eigen::Index a = 0; a < k; ++a) d[sub[(std::size_t)a]] += reach * v[a];
+        d[first] = end - beta[first];
+        pinned[(std::size_t)first] = 1;
+        model = cl.force + force_derivative(s, d, cl.upper);
+        continue;
+      }
+      stable = true;
+      for (Eigen::Index a = 0; a < k; ++a) d[sub[(std::size_t)a]] += g.x[a];
+      model = cl.force + force_derivative(s, d, cl.upper);
+      // Pin the free points whose move leaves their interval; release pinned points whose model
+      // force at the move's end points back inside.
+      std::vector<char> next = pinned;
+      bool changed = false;
+      for (Eigen::Index i = 0; i < n; ++i) {
+        if (!cl.free[(std::size_t)i]) continue;
+        const double end = beta[i] + d[i];
+        if (!pinned[(std::size_t)i]) {
+          if (end > cl.hi[i]) next[(std::size_t)i] = 1, d[i] = cl.hi[i] - beta[i], changed = true;
+          else if (end < cl.lo[i]) next[(std::size_t)i] = 1, d[i] = cl.lo[i] - beta[i], changed = true;
+        } else {
+          const bool at_hi = std::fabs(end - cl.hi[i]) <= 1e-14, at_lo = std::fabs(end - cl.lo[i]) <= 1e-14;
+          if ((at_hi && model[i] < 0) || (at_lo && model[i] > 0)) next[(std::size_t)i] = 0, changed = true;
+        }
+      }
+      if (!changed) break;
+      if (std::find(seen.begin(), seen.end(), next) != seen.end()) break;
+      seen.push_back(next);
+      pinned = next;
+      model = cl.force + force_derivative(s, d, cl.upper);
+    }
+    double slope = 0;
+    for (Eigen::Index i = 0; i < n; ++i) slope += cl.force[i] * p_.area[i] * d[i];
+    if (!d.allFinite() || !(slope > 0)) return Gradient;
+    return stable ? Newton : NegativeCurvature;
+  }
+
+  // The nested loops' local step as a gradient step: d = f / (D + q) on the free points.
+  Eigen::VectorXd gradient_direction(const StepState& s, const Classified& cl) const {
+    const Eigen::Index n = s.chi.size();
+    Eigen::VectorXd d = Eigen::VectorXd::Zero(n);
+    const double rhoa = p_.law.rho * p_.law.a, latent_slope = p_.law.rho * p_.law.latent / p_.law.T0;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      if (!cl.free[(std::size_t)i]) continue;
+      const double D = ((s.alpha[i] > 0 ? rhoa : 0.0) * std::fabs(s.trace[i]) + latent_slope) * p_.kappa[i];
+      d[i] = cl.force[i] / (D + s.q[i]);
+    }
+    return d;
+  }
+
+  struct Search {
+    bool ok = false;
+    double change = 0;  // the change of W (trapezoid rule)
+    StepState state;
+  };
+  // Armijo backtracking along the move projected on the intervals; the change of W by the
+  // trapezoid rule on the forces at both ends. A full Newton move is also accepted when it at
+  // least halves the smallest residual of the step so far (near the solution W's change is at
+  // the level of the contact solver's tolerance; each such acceptance halves that bound, so they
+  // are finitely many and the iteration still cannot cycle).
+  Search line_search(const StepState& s, const Eigen::VectorXd& beta, const Classified& cl, const Eigen::VectorXd& d,
+                     double tol, double best, bool newton) {
+    const Eigen::Index n = beta.size();
+    Search out;
+    double lambda = 1.0;
+    for (int halving = 0; halving < 40; ++halving, lambda *= 0.5) {
+      Eigen::VectorXd moved = beta, step = Eigen::VectorXd::Zero(n);
+      bool any = false;
+      for (Eigen::Index i = 0; i < n; ++i) {
+        if (!cl.free[(std::size_t)i]) continue;
+        moved[i] = std::clamp(beta[i] + lambda * d[i], cl.lo[i], cl.hi[i]);
+        step[i] = moved[i] - beta[i];
+        any |= step[i] != 0.0;
+      }
+      if (!any) return out;
+      Eigen::VectorXd trial(n);
+      for (Eigen::Index i = 0; i < n; ++i) trial[i] = moved[i] > 0 ? s.sign[i] * moved[i] : 0.0;
+      StepState t = evaluate(trial, s.r, s.threshold);
+      double change = 0, predicted = 0;
+      for (Eigen::Index i = 0; i < n; ++i) {
+        if (step[i] == 0.0) continue;
+        // The force at both ends, on the side of held the move lies on (psi is linear there).
+        const double f0 = step[i] > 0 ? s.drive[i] - s.q[i] * beta[i] + (beta[i] < s.held[i] ? s.q[i] : 0.0)
+                                      : s.drive[i] - s.q[i] * beta[i] + (beta[i] <= s.held[i] ? s.q[i] : 0.0);
+        const bool below = moved[i] < s.held[i] || (moved[i] == s.held[i] && step[i] > 0);
+        const double f1 = t.drive[i] - t.q[i] * moved[i] + (below ? t.q[i] : 0.0);
+        change -= 0.5 * p_.area[i] * (f0 + f1) * step[i];
+        predicted -= p_.area[i] * f0 * step[i];
+      }
+      if (std::getenv("SMA_STEP_TRACE"))
+        std::fprintf(stderr, "    search %s lambda %.3g change %.4e predicted %.4e residual %.3e\n",
+                     newton ? "newton" : "other", lambda, change, predicted, t.residual_norm);
+      if (change <= 1e-4 * predicted || t.residual_norm <= tol ||
+          (newton && halving == 0 && t.residual_norm <= 0.5 * best)) {
+        out.ok = true;
+        out.change = change;
+        out.state = std::move(t);
+        return out;
+      }
+    }
+    return out;
+  }
+
+  const StepProblem& p_;
+  StepResult& stats_;
+};
+
+// Solves the step (see the header); chi, r, threshold in/out; T, u out.
+inline StepResult solve_fraction_step(const StepProblem& problem, const StepSettings& settings,
+                                      Eigen::VectorXd& chi, Eigen::VectorXd& r, Eigen::VectorXd& threshold,
+                                      Eigen::VectorXd& T, Eigen::VectorXd& u) {
+  StepResult stats;
+  StepSolver solver(problem, stats);
+  try {
+    solver.solve(settings, chi, r, threshold, T, u);
+  } catch (const std::runtime_error& e) {  // a contact loop that did not converge: named, not thrown
+    stats.converged = false;
+    stats.failure = e.what();
+  }
+  return stats;
+}
+
+}  // namespace sma
