@@ -43,6 +43,15 @@
 //       one condensed contact global step (plugin/core/contact_step.hpp): the free motion of the
 //       contact rows, the PSOR on W (r warm start in/out), u = K^-1 (rhs + S H' r), by one forward
 //       and one backward solve; returns the sweep count.
+//   long StepOperatorsSet(long handle, matrix B, matrix Q, matrix Interp)   keeps the fraction
+//       model's step operators (B: dofs x points, Q: heat nodes x points int s phi, Interp: points x
+//       heat nodes) in a slot (< 0: a new one); returns the slot.
+//   long StepSolveFraction(real[] settings, real[] data, real[int,int] contactTable,
+//                          real[] contact, real[] chi, real[] T, real[] u, real[] stats)
+//       one time step of the fraction model by the globalised Newton method of
+//       plugin/core/step_newton.hpp (the packing of the arrays: at the function below); returns
+//       its iterations. A step that does not converge returns stats[0] = 0, and
+//   string StepFailureMessage(long)   says why ("" after a converged step).
 //   long RoundToFloat(real[] x)   rounds every value to the nearest single-precision float
 //       (IEEE round to nearest even), in place; returns how many values changed.
 //   real SmaPluginVersion()  version stamp, checked by edp/lib/plugin.idp.

@@ -3,8 +3,10 @@
 (the same equations written again in vectorised numpy, tridiagonal LDL' factorisations, no shared
 code with the scripts or the plugin), at nr 20, 200 steps.
 
-The two differ only in round-off and in where a loop's stopping test falls, so their curves must
-agree to a bound set by the loops' tolerances:
+The scene runs the same scheme with -stepsolver fixedpoint (its default solver, newton, solves the
+same step equations by another method: checked last, below). The two differ only in round-off and
+in where a loop's stopping test falls, so their curves must agree to a bound set by the loops'
+tolerances:
   - each DC loop stops once the relative change of u is <= dctol, so each run's displacement, and
     with it the contact pressure (a linear function of the inner displacement, of the size of the
     interference), is within about dctol of the loop's limit: the two pressure curves differ by at
@@ -18,6 +20,11 @@ Run at the default tolerances (-dctol 1e-3, -fptol 1e-8) and at tight ones (-dct
 -fptol 1e-12), where the bound is eight orders tighter. The same first-contact and austenite
 steps. The bound must also be able to fail: the numpy run with the latent heat changed by 1e-4
 relative must be outside the tight bound.
+The scene's default step solver (-stepsolver newton, plugin/core/step_newton.hpp: max |chi -
+law(chi)| <= -steptol 1e-8 at every step) against the tight numpy run, the nearest to the scheme's
+limit: its pressure curve within 2 steptol of the peak, its temperatures within 2 steptol K (a
+fraction error moves T by at most L / C0 = 3.6 K per unit), the same first-contact and austenite
+steps.
 Writes results/checks/radial_numpy.json.
 """
 import json
@@ -47,7 +54,8 @@ def numpy_run(tag, *args):
 def compare(tag, dctol, fptol):
     """Both runs at the given tolerances; returns the measured differences."""
     tolerances = ["-dctol", repr(dctol), "-fptol", repr(fptol)]
-    ff = run_scene("sleeve-radial", "radial-numpy-ff-" + tag, "-quiet", "1", *SIZE, *tolerances)
+    ff = run_scene("sleeve-radial", "radial-numpy-ff-" + tag, "-quiet", "1", "-stepsolver", "fixedpoint", *SIZE,
+                   *tolerances)
     ours = numpy_run(tag, *SIZE, *tolerances)
     e = curve_error(os.path.join(ours, "history.csv"), os.path.join(ff, "history.csv"))
     sf = json.load(open(os.path.join(ff, "summary.json")))
@@ -71,8 +79,26 @@ def compare(tag, dctol, fptol):
                                          "first_contact_step", "austenite_step")}, "ff_dir": ff}
 
 
+def newton_against_tight(tight_numpy):
+    """The default step solver against the tight numpy run (module docstring)."""
+    steptol = 1e-8
+    ff = run_scene("sleeve-radial", "radial-numpy-ff-newton", "-quiet", "1", *SIZE, "-steptol", repr(steptol))
+    e = curve_error(os.path.join(tight_numpy, "history.csv"), os.path.join(ff, "history.csv"))
+    sf = json.load(open(os.path.join(ff, "summary.json")))
+    sn = json.load(open(os.path.join(tight_numpy, "summary.json")))
+    check(sf["step_solver"] == "newton" and e["linf"] <= 2 * steptol and e["T_inner_l1"] <= 2 * steptol * 3.6
+          and sf["first_contact_step"] == sn["first_contact_step"] and sf["austenite_step"] == sn["austenite_step"],
+          f"newton (-steptol {steptol:g}) against the tight fixed point: pressure {e['linf']:.2e} of the peak "
+          f"<= {2 * steptol:.0e}, inner T {e['T_inner_l1']:.2e} K <= {2 * steptol * 3.6:.1e} K, first contact "
+          f"{sf['first_contact_step']} / {sn['first_contact_step']}, austenite {sf['austenite_step']} / "
+          f"{sn['austenite_step']}")
+    return {"steptol": steptol, "pressure_linf": e["linf"], "T_inner_l1_K": e["T_inner_l1"],
+            "fixed_point_iterations_max": sf["fixed_point_iterations_max"]}
+
+
 def main():
     figures = {"default": compare("default", 1e-3, 1e-8), "tight": compare("tight", 1e-10, 1e-12)}
+    figures["newton"] = newton_against_tight(os.path.join(TEST_RESULTS, "radial-numpy-tight"))
     # The bound can fail: a 1e-4 change of one constant in the numpy run leaves it.
     tight = figures["tight"]
     perturbed = numpy_run("perturbed", *SIZE, "-dctol", "1e-10", "-fptol", "1e-12", "-latent", "3000.3")

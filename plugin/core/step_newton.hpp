@@ -104,7 +104,7 @@ struct StepSettings {
 
 struct StepResult {
   bool converged = false;
-  int iterations = 0, gradient_steps = 0, curvature_steps = 0, evaluations = 0, products = 0;
+  int iterations = 0, gradient_steps = 0, curvature_steps = 0, variant_switches = 0, evaluations = 0, products = 0;
   int heat_solves = 0, stiffness_solves = 0, psor_sweeps = 0, slip_iterations = 0;
   double residual = 0.0;
   std::string failure;  // why it stopped unconverged (empty when converged)
@@ -139,14 +139,16 @@ struct GmresResult {
   bool finite = true;
 };
 template <class Op>
-GmresResult gmres(const Op& apply, const Eigen::VectorXd& b, double rtol, int maxit) {
+GmresResult gmres(const Op& apply, const Eigen::VectorXd& b, double rtol, int maxit, bool stop_if_unstable = false) {
   GmresResult out;
   const Eigen::Index n = b.size();
   out.x = Eigen::VectorXd::Zero(n);
   const double beta = b.norm();
   if (n == 0 || beta == 0.0) return out;
   const int m = (int)std::min<Eigen::Index>(maxit, n);
-  Eigen::MatrixXd V(n, m + 1), H = Eigen::MatrixXd::Zero(m + 1, m);
+  // H: the Arnoldi Hessenberg matrix (for the Ritz values); R: H rotated to upper triangular by
+  // the Givens rotations (cs, sn), g the rotated right side.
+  Eigen::MatrixXd V(n, m + 1), H = Eigen::MatrixXd::Zero(m + 1, m), R = Eigen::MatrixXd::Zero(m + 1, m);
   Eigen::VectorXd cs = Eigen::VectorXd::Zero(m), sn = Eigen::VectorXd::Zero(m), g = Eigen::VectorXd::Zero(m + 1);
   V.col(0) = b / beta;
   g[0] = beta;
@@ -160,29 +162,41 @@ GmresResult gmres(const Op& apply, const Eigen::VectorXd& b, double rtol, int ma
     H(k + 1, k) = w.norm();
     const bool breakdown = !(H(k + 1, k) > 1e-14 * beta);
     if (!breakdown) V.col(k + 1) = w / H(k + 1, k);
-    // The least-squares residual, by Givens rotations of a copy of column k.
-    Eigen::VectorXd col = H.col(k).head(k + 2);
+    R.col(k).head(k + 2) = H.col(k).head(k + 2);
     for (int j = 0; j < k; ++j) {
-      const double t = cs[j] * col[j] + sn[j] * col[j + 1];
-      col[j + 1] = -sn[j] * col[j] + cs[j] * col[j + 1];
-      col[j] = t;
+      const double t = cs[j] * R(j, k) + sn[j] * R(j + 1, k);
+      R(j + 1, k) = -sn[j] * R(j, k) + cs[j] * R(j + 1, k);
+      R(j, k) = t;
     }
-    const double rr = std::hypot(col[k], col[k + 1]);
-    cs[k] = rr > 0 ? col[k] / rr : 1.0;
-    sn[k] = rr > 0 ? col[k + 1] / rr : 0.0;
+    const double rr = std::hypot(R(k, k), R(k + 1, k));
+    cs[k] = rr > 0 ? R(k, k) / rr : 1.0;
+    sn[k] = rr > 0 ? R(k + 1, k) / rr : 0.0;
+    R(k, k) = rr;
+    R(k + 1, k) = 0.0;
     g[k + 1] = -sn[k] * g[k];
     g[k] = cs[k] * g[k];
     if (breakdown || std::fabs(g[k + 1]) <= rtol * beta) {
       ++k;
       break;
     }
+    // An unstable operator is reported without solving on (the caller does not use the
+    // solution then): its Ritz values are checked at 8, 16, 32, ... iterations.
+    if (stop_if_unstable && k + 1 >= 8 && ((k + 1) & k) == 0) {
+      const Eigen::EigenSolver<Eigen::MatrixXd> early(H.topLeftCorner(k + 1, k + 1), false);
+      if (early.eigenvalues().real().minCoeff() <= 0) {
+        ++k;
+        break;
+      }
+    }
   }
   out.iterations = k;
-  // y from the Hessenberg least-squares problem (small: solved directly).
-  const Eigen::MatrixXd Hk = H.topLeftCorner(k + 1, k);
-  Eigen::VectorXd e1 = Eigen::VectorXd::Zero(k + 1);
-  e1[0] = beta;
-  const Eigen::VectorXd y = Hk.colPivHouseholderQr().solve(e1);
+  // y = R^-1 g by back-substitution (a zero pivot: the operator is singular on the Krylov space).
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(k);
+  for (int i = k - 1; i >= 0; --i) {
+    double t = g[i];
+    for (int j = i + 1; j < k; ++j) t -= R(i, j) * y[j];
+    y[i] = R(i, i) != 0.0 ? t / R(i, i) : std::numeric_limits<double>::quiet_NaN();
+  }
   out.x = V.leftCols(k) * y;
   out.finite = out.x.allFinite();
   if (k > 0) {
@@ -290,33 +304,60 @@ class StepSolver {
   void solve(const StepSettings& set, Eigen::VectorXd& chi, Eigen::VectorXd& r, Eigen::VectorXd& threshold,
              Eigen::VectorXd& T, Eigen::VectorXd& u) {
     StepState s = evaluate(chi, r, threshold);
-    double best = s.residual_norm;  // the smallest residual so far (the line search's watchdog)
+    switch_variants(s);
+    double best = s.residual_norm;  // the smallest residual so far (the watchdog's)
+    double radius = 1.0;            // the trust region, fraction units (max norm)
     while (s.residual_norm > set.tol && stats_.iterations < set.maxit) {
       ++stats_.iterations;
       const Eigen::VectorXd beta = s.chi.cwiseAbs();
-      Classified cl = classify(s, beta);
-      Eigen::VectorXd d;
-      const Move tried = newton_direction(s, beta, cl, set, d);
-      Search found;
-      if (tried == Newton) found = line_search(s, beta, cl, d, set.tol, best, true);
-      if (tried == NegativeCurvature) {
-        // Both the move along the unstable directions and the gradient step (each lowers W);
-        // the one that leaves the smaller residual.
-        ++stats_.curvature_steps;
-        found = line_search(s, beta, cl, d, set.tol, best, false);
+      const Classified cl = classify(s, beta);
+      Classified region = cl;  // the intervals cut to the trust region
+      for (Eigen::Index i = 0; i < beta.size(); ++i) {
+        region.lo[i] = std::max(cl.lo[i], beta[i] - radius);
+        region.hi[i] = std::min(cl.hi[i], beta[i] + radius);
       }
-      if (!(tried == Newton && found.ok)) {
+      Eigen::VectorXd d;
+      const Move tried = newton_direction(s, beta, region, set, d);
+      if (const char* level = std::getenv("SMA_STEP_TRACE"); level && level[0] == '2')
+        for (Eigen::Index i = 0; i < beta.size(); ++i)
+          if (cl.free[(std::size_t)i])
+            std::fprintf(stderr, "    point %ld beta %.9f held %.6f [%.6f, %.6f] force/q %.3e d %.3e sign %g F %.3e\n",
+                         (long)i, beta[i], s.held[i], cl.lo[i], cl.hi[i], cl.force[i] / s.q[i], d[i], s.sign[i],
+                         s.residual[i]);
+      Search found;
+      if (tried != Gradient) {
+        if (tried == NegativeCurvature) ++stats_.curvature_steps;
+        // The move against the quadratic model of W: accepted when W falls by at least a tenth
+        // of the model's prediction (or the step is solved, or a Newton move halves the best
+        // residual); the region grows after a good full-size move and shrinks after a poor one.
+        found = try_move(s, beta, region, d, set.tol, best, tried == Newton);
+        const double size = d.lpNorm<Eigen::Infinity>();
+        if (found.ratio > 0.75 && size >= 0.99 * radius) radius = std::min(1.0, 2 * radius);
+        else if (found.ratio < 0.25) radius = std::max(1e-12, 0.25 * size);
+        if (!found.ok && tried == Newton && radius > 1e-9) continue;  // a smaller region, the same point
+      }
+      if (!found.ok || tried == NegativeCurvature) {
+        // The gradient step; after a move along unstable directions, the one of the two that
+        // leaves the smaller residual (a snap of the whole ring goes faster by the local steps).
         ++stats_.gradient_steps;
         Search gradient = line_search(s, beta, cl, gradient_direction(s, cl), set.tol, best, false);
         if (gradient.ok && (!found.ok || gradient.state.residual_norm < found.state.residual_norm))
           found = std::move(gradient);
       }
       if (!found.ok) {
-        stats_.failure = "the line search found no decrease of the step's energy";
+        stats_.failure = "neither the trust-region move nor the gradient step lowers the step's energy";
         break;
       }
       s = std::move(found.state);
+      switch_variants(s);
       best = std::min(best, s.residual_norm);
+      if (const char* level = std::getenv("SMA_STEP_TRACE"); level && level[0] == '2') {
+        int shown = 0;
+        for (Eigen::Index i = 0; i < s.chi.size() && shown < 5; ++i)
+          if (std::fabs(s.residual[i]) > 0.5)
+            ++shown, std::fprintf(stderr, "    after: point %ld chi %.3f trace %.3e sign %g held %.3f drive/q %.3e r_max %.3e\n", (long)i, s.chi[i],
+                                  s.trace[i], s.sign[i], s.held[i], s.drive[i] / s.q[i], s.r.lpNorm<Eigen::Infinity>());
+      }
       if (std::getenv("SMA_STEP_TRACE")) {
         int nfree = 0;
         for (char f : cl.free) nfree += f;
@@ -547,6 +588,23 @@ class StepSolver {
     return cl;
   }
 
+  // A transformed point whose strain trace has the other sign takes the other martensite (the
+  // variant the trace selects, as the local step does: a lower energy at the same fraction),
+  // and the state is evaluated again; repeated while the variants change (at most 5 times).
+  // The fraction moves of W cannot express a change of variant: without this, a point whose
+  // trace changed sign would keep a residual of 2 |chi|.
+  void switch_variants(StepState& s) {
+    for (int pass = 0; pass < 5; ++pass) {
+      Eigen::VectorXd chi = s.chi;
+      int switched = 0;
+      for (Eigen::Index i = 0; i < chi.size(); ++i)
+        if (chi[i] != 0.0 && chi[i] * s.sign[i] < 0) chi[i] = -chi[i], ++switched;
+      if (switched == 0) return;
+      stats_.variant_switches += switched;
+      s = evaluate(chi, s.r, s.threshold);
+    }
+  }
+
   enum Move { Gradient = 0, Newton = 1, NegativeCurvature = 2 };
   // The Newton move on the free points (header, step 2): rounds of an active-set method on the
   // linearised step, from the model point d (the move so far; model = the linearised force there):
@@ -594,8 +652,8 @@ class StepSolver {
         for (Eigen::Index a = 0; a < k; ++a) out[a] = -df[sub[(std::size_t)a]] / scale[a];
         return out;
       };
-      const step_detail::GmresResult g = step_detail::gmres(apply, rhs, rtol, set.gmres_maxit);
-      if (!g.finite) return Gradient;
+      const step_detail::GmresResult g = step_detail::gmres(apply, rhs, rtol, set.gmres_maxit, true);
+      if (!g.finite && g.smallest_ritz_real > 0) return Gradient;
       if (!(g.smallest_ritz_real > 0)) {
         stable = false;
         if (g.smallest_ritz_vector.size() != k) return Gradient;
@@ -665,8 +723,60 @@ class StepSolver {
   struct Search {
     bool ok = false;
     double change = 0;  // the change of W (trapezoid rule)
+    double ratio = 0;   // change over the quadratic model's (try_move)
     StepState state;
   };
+  // The change of W from s (at beta) to t (at moved), by the trapezoid rule on the forces at
+  // both ends, on the side of held each move lies on (psi is linear there); predicted: the
+  // first-order change.
+  double energy_change(const StepState& s, const Eigen::VectorXd& beta, const StepState& t,
+                       const Eigen::VectorXd& moved, double& predicted) const {
+    double change = 0;
+    predicted = 0;
+    for (Eigen::Index i = 0; i < beta.size(); ++i) {
+      const double step = moved[i] - beta[i];
+      if (step == 0.0) continue;
+      const double f0 = step > 0 ? s.drive[i] - s.q[i] * beta[i] + (beta[i] < s.held[i] ? s.q[i] : 0.0)
+                                 : s.drive[i] - s.q[i] * beta[i] + (beta[i] <= s.held[i] ? s.q[i] : 0.0);
+      const bool below = moved[i] < s.held[i] || (moved[i] == s.held[i] && step > 0);
+      const double f1 = t.drive[i] - t.q[i] * moved[i] + (below ? t.q[i] : 0.0);
+      change -= 0.5 * p_.area[i] * (f0 + f1) * step;
+      predicted -= p_.area[i] * f0 * step;
+    }
+    return change;
+  }
+  // One trust-region move d (within the region's intervals): evaluated, its W change against
+  // the quadratic model's -sum area (f d + d (df/dbeta) d / 2).
+  Search try_move(const StepState& s, const Eigen::VectorXd& beta, const Classified& region,
+                  const Eigen::VectorXd& d, double tol, double best, bool newton) {
+    const Eigen::Index n = beta.size();
+    Search out;
+    Eigen::VectorXd moved = beta;
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (region.free[(std::size_t)i]) moved[i] = std::clamp(beta[i] + d[i], region.lo[i], region.hi[i]);
+    const Eigen::VectorXd step = moved - beta;
+    if (step.lpNorm<Eigen::Infinity>() == 0) return out;
+    const Eigen::VectorXd curvature = force_derivative(s, step, region.upper);
+    double model = 0;
+    for (Eigen::Index i = 0; i < n; ++i)
+      model -= p_.area[i] * (region.force[i] * step[i] + 0.5 * step[i] * curvature[i]);
+    Eigen::VectorXd trial(n);
+    for (Eigen::Index i = 0; i < n; ++i) trial[i] = moved[i] > 0 ? s.sign[i] * moved[i] : 0.0;
+    StepState t = evaluate(trial, s.r, s.threshold);
+    double predicted = 0;
+    const double change = energy_change(s, beta, t, moved, predicted);
+    out.change = change;
+    out.ratio = model < 0 ? change / model : (change < 0 ? 1.0 : 0.0);
+    if (std::getenv("SMA_STEP_TRACE"))
+      std::fprintf(stderr, "    move %s size %.3g change %.4e model %.4e ratio %.3f residual %.3e\n",
+                   newton ? "newton" : "curvature", step.lpNorm<Eigen::Infinity>(), change, model, out.ratio,
+                   t.residual_norm);
+    if ((out.ratio >= 0.1 && change < 0) || t.residual_norm <= tol || (newton && t.residual_norm <= 0.5 * best)) {
+      out.ok = true;
+      out.state = std::move(t);
+    }
+    return out;
+  }
   // Armijo backtracking along the move projected on the intervals; the change of W by the
   // trapezoid rule on the forces at both ends. A full Newton move is also accepted when it at
   // least halves the smallest residual of the step so far (near the solution W's change is at

@@ -1,0 +1,115 @@
+#!/usr/bin/python3
+"""The fraction model's step solver (-stepsolver newton, plugin/core/step_newton.hpp) against the
+paper's nested loops (-stepsolver fixedpoint), which solve the same step equations by another
+method (docs/parameters.md, "Step solver"):
+
+  - sleeve-radial at the project's scale and at the paper's (-a 3000, 0.5 mm interference), and
+    sleeve-circular (coarse mesh, 600 steps) and the paper-scale sleeve-elliptic-friction (coarse
+    mesh): every step converges (no loop counted unconverged), the largest final step residual
+    max |chi - law(chi)| of the run is <= -steptol, the same pressure curve as the nested loops
+    (transient L1 of the mean pressure <= 1e-4, the nested loops' own stopping error measured
+    at 1e-6 to 1e-5), the same first-contact and austenite steps; at most 5 step iterations per
+    transforming step on average and 15 at most (the nested loops: 23 to 114 on average);
+  - a variant that replaces the law's LocalStep hook (edp/variants/sleeve-asymmetric-law.edp)
+    runs the nested loops under -stepsolver auto, and -stepsolver newton there fails naming the
+    hook; -stepsolver newton with -psormode full fails naming it; an unknown -stepsolver fails.
+Records results/checks/step_solver.json.
+"""
+import json
+import os
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools"))
+
+from checklib import ROOT, TEST_RESULTS, check, finish, record, rows, run_scene  # noqa: E402
+from curve_error import curve_error  # noqa: E402
+
+PAPER = ["-a", "3000", "-interference", "0.0005"]
+PAPER_ELLIPSE = ["-a", "3000", "-Ri", "0.05", "-pipeA", "0.0504", "-pipeB", "0.0505"]
+COARSE = ["-mesh", "meshes/sleeve-coarse.msh"]
+
+
+def iterations(out):
+    """Step iterations per transforming step (the austenite fraction changed): mean and max."""
+    table = rows(os.path.join(out, "history.csv"))
+    counts, before = [], 1.0
+    for row in table:
+        fa = float(row["fraction_austenite"])
+        if abs(fa - before) > 1e-12:
+            counts.append(int(row["fixed_point_iterations"]))
+        before = fa
+    return sum(counts) / len(counts), max(counts), len(counts)
+
+
+def pair(tag, scene, *args):
+    """The scene with both solvers; checks and returns the figures."""
+    newton = run_scene(scene, f"step-solver-{tag}-newton", "-quiet", "1", *args)
+    nested = run_scene(scene, f"step-solver-{tag}-fixedpoint", "-quiet", "1", "-stepsolver", "fixedpoint", *args)
+    sn = json.load(open(os.path.join(newton, "summary.json")))
+    sf = json.load(open(os.path.join(nested, "summary.json")))
+    e = curve_error(os.path.join(nested, "history.csv"), os.path.join(newton, "history.csv"))
+    mean_n, max_n, transforming = iterations(newton)
+    mean_f, max_f, _ = iterations(nested)
+    check(sn["step_solver"] == "newton" and sf["step_solver"] == "fixedpoint"
+          and sn["unconverged_loops"] == 0 and sf["unconverged_loops"] == 0
+          and sn["step_residual_max"] <= sn["step_tol"],
+          f"{tag}: both converge at every step; newton's largest step residual {sn['step_residual_max']:.1e} "
+          f"<= -steptol {sn['step_tol']:g}")
+    check(e["l1_transient"] <= 1e-4 and sn["first_contact_step"] == sf["first_contact_step"]
+          and sn["austenite_step"] == sf["austenite_step"],
+          f"{tag}: the same curve as the nested loops: transient L1 {e['l1_transient']:.1e} <= 1e-4 (largest "
+          f"pointwise {e['linf']:.1e} of the peak), first contact {sn['first_contact_step']} / "
+          f"{sf['first_contact_step']}, austenite {sn['austenite_step']} / {sf['austenite_step']}")
+    check(mean_n <= 5 and max_n <= 15,
+          f"{tag}: {mean_n:.2f} step iterations per transforming step on average (<= 5), {max_n} at most "
+          f"(<= 15), over {transforming} steps; the nested loops {mean_f:.1f} and {max_f}")
+    return {"transforming_steps": transforming, "newton_iterations_mean": mean_n, "newton_iterations_max": max_n,
+            "fixedpoint_iterations_mean": mean_f, "fixedpoint_iterations_max": max_f,
+            "pressure_l1_transient": e["l1_transient"], "pressure_linf": e["linf"],
+            "newton_step_residual_max": sn["step_residual_max"], "newton_gradient_steps": sn["step_gradient_steps"],
+            "newton_loop_seconds": sn["wall_seconds"], "fixedpoint_loop_seconds": sf["wall_seconds"],
+            "newton_stiffness_solves_mean": sn["dc_iterations_mean"],
+            "fixedpoint_stiffness_solves_mean": sf["dc_iterations_mean"]}
+
+
+def refused(args, words):
+    """A run that must fail (exit 1) with an error line holding every word of `words`."""
+    out = os.path.join(TEST_RESULTS, "step-solver-refused")
+    p = subprocess.run([os.path.join(ROOT, "tools", "ff"), *args, "-out", out, "-quiet", "1", "-steps", "3"],
+                       cwd=ROOT, capture_output=True, text=True)
+    lines = [line for line in (p.stdout + p.stderr).splitlines() if line.startswith("error:")]
+    return p.returncode == 1 and len(lines) == 1 and all(w in lines[0] for w in words), (lines or [p.stderr[-200:]])[0]
+
+
+def main():
+    figures = {
+        "radial": pair("radial", "sleeve-radial"),
+        "radial-paper": pair("radial-paper", "sleeve-radial", *PAPER),
+        "circular": pair("circular", "sleeve-circular", *COARSE, "-steps", "600"),
+        "elliptic-friction-paper": pair("elliptic-friction-paper", "sleeve-elliptic-friction", *COARSE, *PAPER_ELLIPSE),
+    }
+    # Where newton does not apply.
+    variant = os.path.join(TEST_RESULTS, "step-solver-variant")
+    subprocess.run([os.path.join(ROOT, "tools", "ff"), "edp/variants/sleeve-asymmetric-law.edp", "-out", variant,
+                    "-quiet", "1", "-steps", "60", *COARSE], cwd=ROOT, check=True)
+    sv = json.load(open(os.path.join(variant, "summary.json")))
+    ok, line = refused(["edp/variants/sleeve-asymmetric-law.edp", "-stepsolver", "newton", "-phasemodel", "fraction"],
+                       ["newton", "LocalStep"])
+    check(sv["step_solver"] == "fixedpoint" and ok,
+          f"a variant with its own LocalStep runs the nested loops under auto ({sv['step_solver']}); newton there: {line}")
+    ok, line = refused(["edp/scenes/sleeve-radial.edp", "-stepsolver", "newton", "-phasemodel", "onoff"],
+                       ["newton", "onoff"])
+    check(ok, f"-stepsolver newton with the on/off model: {line}")
+    ok, line = refused(["edp/scenes/sleeve-circular.edp", "-stepsolver", "newton", "-psormode", "full", *COARSE],
+                       ["newton", "psormode"])
+    check(ok, f"-stepsolver newton with the full-system contact solver: {line}")
+    ok, line = refused(["edp/scenes/sleeve-radial.edp", "-stepsolver", "secant"], ["-stepsolver", "secant"])
+    check(ok, f"an unknown step solver: {line}")
+    record("step_solver", figures)
+    finish()
+
+
+if __name__ == "__main__":
+    main()
