@@ -19,33 +19,33 @@
 //
 // Why not the nested fixed point: its contraction factor is set by a nearly neutral mode (the
 // partly transformed zone's eigenstrain against its own mechanical response through the contact:
-// on the paper's scale the step's Jacobian has eigenvalues down to 7e-6 of its largest), so it
-// crawls for hundreds of iterations. The step is instead, to 0.1 % (the measured asymmetry of its
-// Jacobian, from alpha(T)), the stationarity condition of an incremental energy
+// on the paper's scale the step's Jacobian on that zone has eigenvalues down to 7e-6 of its
+// largest), so it crawls for hundreds of iterations. The step is instead, to 0.1 % (the measured
+// asymmetry of its Jacobian, from alpha(T)), the stationarity condition of an incremental energy
 //   W(beta) = Pi(alpha beta) + sum_i area_i (c_i beta_i + q_i beta_i^2 / 2 + psi_i(beta_i - held_i))
 //             + (rho L / T0) / 2 beta' A Interp H^-1 latent beta
 // (Pi the contact-mechanical energy, concave in the eigenstress: the paper's DC structure;
 // psi_i(x) = q_i max(-x, 0) the laminate's dissipation; the heat quadratic convex), with
 // -dW/dbeta_i = area_i f_i, f = drive - q beta (+ q on the reverting side of held). Each iteration:
 //   1. classify the points: free in their interval [0, held] or [held, 1], or bound at 0, held,
-//      1 when the force pushes them outward;
+//      1 when the force pushes them outward; the intervals are cut to a trust region;
 //   2. Newton on the free points: (-df/dbeta)_FF d_F = f_F, by GMRES on the exact linearisation
-//      (a heat back-solve and a stiffness back-solve per product, the contact statuses frozen);
-//      points whose Newton move leaves their interval are pinned to its end and the free system
-//      solved again (a primal-dual active-set loop, at most `pdas_rounds` rounds, stopped when its
-//      pinned set repeats). GMRES's Ritz values must all have a positive real part (the free
-//      block is stable, so the step is a descent direction of W); otherwise, or when the move is
-//      not a descent direction, the gradient step below is taken instead;
-//   3. line search along the move projected on the intervals, Armijo on W, whose change is
-//      measured by the trapezoid rule on the forces at both ends (exact for a quadratic W: no
-//      energy is evaluated);
+//      (a heat back-solve and a stiffness back-solve per product, the contact statuses frozen),
+//      in rounds of an active-set method (newton_direction): points leaving their interval are
+//      pinned to its end; an unstable block (a Ritz value of non-positive real part: part of the
+//      front snaps) is followed along its Ritz vector to the first interval end;
+//   3. the move is accepted when W falls by at least a tenth of its quadratic model's prediction
+//      (W's change by the trapezoid rule on the forces at both ends: exact for a quadratic W, no
+//      energy evaluated), or when a full Newton move halves the smallest residual so far; the
+//      trust region grows or shrinks with that ratio;
 //   4. fall-back, always a descent direction: the preconditioned gradient step
 //      d = f / (D + q), D = (rho a |tr e| [alpha > 0] + rho L / T0) kappa, which is the nested
-//      loops' enthalpy-regularised local step; with the line search it decreases W at every
-//      iteration, so the iteration cannot cycle.
-// Measured on the radial model (tools/step_newton_1d.py, docs/benchmarks.md): 2.8 iterations per
-// transforming step on average (at most 4) on the project's scale, 3.5 (at most 11) on the
-// paper's, where the nested loops take 59 (127) and 109 (220).
+//      loops' enthalpy-regularised local step, with Armijo backtracking on W: the iteration
+//      cannot cycle.
+// A transformed point whose trace changed sign takes the other martensite (switch_variants).
+// Measured (docs/parameters.md, "Step solver"; tests/step_solver_test.py): 2 to 3 iterations per
+// transforming step on average, at most 6 once the ring has dilated, on the project's and the
+// paper's scale, friction included, where the nested loops take 11 to 114 on average.
 #pragma once
 
 #include <Eigen/Dense>
