@@ -407,6 +407,7 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
     sma::StepSettings set;
     set.tol = (*settings)[10];
     set.maxit = (int)lrint((*settings)[11]);
+    if (std::getenv("SMA_STEP_TRACE")) set.trace = stderr;  // docs/parameters.md, "Step solver"
     p.psor.omega = (*settings)[12];
     p.psor.tol = (*settings)[13];
     p.psor.maxit = (int)lrint((*settings)[14]);

@@ -52,7 +52,6 @@
 #include <Eigen/Sparse>
 #include <algorithm>
 #include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <complex>
 #include <limits>
@@ -100,6 +99,7 @@ struct StepSettings {
   int maxit = 50;       // iterations (each: one Newton or gradient move)
   int gmres_maxit = 300;
   int pdas_rounds = 12;
+  std::FILE* trace = nullptr;  // one line per iteration there when set (the glue: SMA_STEP_TRACE=1)
 };
 
 struct StepResult {
@@ -318,12 +318,6 @@ class StepSolver {
       }
       Eigen::VectorXd d;
       const Move tried = newton_direction(s, beta, region, set, d);
-      if (const char* level = std::getenv("SMA_STEP_TRACE"); level && level[0] == '2')
-        for (Eigen::Index i = 0; i < beta.size(); ++i)
-          if (cl.free[(std::size_t)i])
-            std::fprintf(stderr, "    point %ld beta %.9f held %.6f [%.6f, %.6f] force/q %.3e d %.3e sign %g F %.3e\n",
-                         (long)i, beta[i], s.held[i], cl.lo[i], cl.hi[i], cl.force[i] / s.q[i], d[i], s.sign[i],
-                         s.residual[i]);
       Search found;
       if (tried != Gradient) {
         if (tried == NegativeCurvature) ++stats_.curvature_steps;
@@ -351,18 +345,12 @@ class StepSolver {
       s = std::move(found.state);
       switch_variants(s);
       best = std::min(best, s.residual_norm);
-      if (const char* level = std::getenv("SMA_STEP_TRACE"); level && level[0] == '2') {
-        int shown = 0;
-        for (Eigen::Index i = 0; i < s.chi.size() && shown < 5; ++i)
-          if (std::fabs(s.residual[i]) > 0.5)
-            ++shown, std::fprintf(stderr, "    after: point %ld chi %.3f trace %.3e sign %g held %.3f drive/q %.3e r_max %.3e\n", (long)i, s.chi[i],
-                                  s.trace[i], s.sign[i], s.held[i], s.drive[i] / s.q[i], s.r.lpNorm<Eigen::Infinity>());
-      }
-      if (std::getenv("SMA_STEP_TRACE")) {
+      if (set.trace) {
         int nfree = 0;
         for (char f : cl.free) nfree += f;
-        std::fprintf(stderr, "step it %d %s residual %.3e free %d evals %d products %d\n", stats_.iterations,
-                     tried == Newton ? "newton" : tried == NegativeCurvature ? "curvature" : "gradient", s.residual_norm, nfree, stats_.evaluations, stats_.products);
+        std::fprintf(set.trace, "step iteration %d: %s move, residual %.3e, %d free points, %d evaluations, %d products\n",
+                     stats_.iterations, tried == Newton ? "newton" : tried == NegativeCurvature ? "curvature" : "gradient",
+                     s.residual_norm, nfree, stats_.evaluations, stats_.products);
       }
     }
     stats_.residual = s.residual_norm;
@@ -767,10 +755,6 @@ class StepSolver {
     const double change = energy_change(s, beta, t, moved, predicted);
     out.change = change;
     out.ratio = model < 0 ? change / model : (change < 0 ? 1.0 : 0.0);
-    if (std::getenv("SMA_STEP_TRACE"))
-      std::fprintf(stderr, "    move %s size %.3g change %.4e model %.4e ratio %.3f residual %.3e\n",
-                   newton ? "newton" : "curvature", step.lpNorm<Eigen::Infinity>(), change, model, out.ratio,
-                   t.residual_norm);
     if ((out.ratio >= 0.1 && change < 0) || t.residual_norm <= tol || (newton && t.residual_norm <= 0.5 * best)) {
       out.ok = true;
       out.state = std::move(t);
@@ -811,9 +795,6 @@ class StepSolver {
         change -= 0.5 * p_.area[i] * (f0 + f1) * step[i];
         predicted -= p_.area[i] * f0 * step[i];
       }
-      if (std::getenv("SMA_STEP_TRACE"))
-        std::fprintf(stderr, "    search %s lambda %.3g change %.4e predicted %.4e residual %.3e\n",
-                     newton ? "newton" : "other", lambda, change, predicted, t.residual_norm);
       if (change <= 1e-4 * predicted || t.residual_norm <= tol ||
           (newton && halving == 0 && t.residual_norm <= 0.5 * best)) {
         out.ok = true;
