@@ -3,9 +3,10 @@
 paper's nested loops (-stepsolver fixedpoint), which solve the same step equations by another
 method (docs/parameters.md, "Step solver"):
 
-  - sleeve-radial at the project's scale and at the paper's (-a 3000, 0.5 mm interference), and
-    sleeve-circular (coarse mesh, 600 steps) and the paper-scale sleeve-elliptic-friction (coarse
-    mesh): every step converges (no loop counted unconverged), the largest final step residual
+  - sleeve-radial at the project's scale and at the paper's (-a 3000, 0.5 mm interference),
+    sleeve-circular (coarse mesh, 600 steps; and 36 layers with steps of 1 s, where 1440 points
+    transform at once and the first version of the solver stalled at step 8), and the
+    paper-scale sleeve-elliptic-friction (coarse mesh): every step converges (no loop counted unconverged), the largest final step residual
     max |chi - law(chi)| of the run is <= -steptol, the same pressure curve as the nested loops
     (transient L1 of the mean pressure <= 1e-4, the nested loops' own stopping error measured
     at 1e-6 to 1e-5), the same first-contact and austenite steps; at most 5 step iterations per
@@ -88,6 +89,9 @@ def main():
         "radial": pair("radial", "sleeve-radial"),
         "radial-paper": pair("radial-paper", "sleeve-radial", *PAPER),
         "circular": pair("circular", "sleeve-circular", *COARSE, "-steps", "600"),
+        # Large steps (1 s) on a finer mesh (36 layers): 1440 points on the front at once.
+        "circular-nr36-dt1": pair("circular-nr36-dt1", "sleeve-circular", "-mesh", "meshes/sleeve-nr36.msh",
+                                  "-steps", "150", "-vtkevery", "0"),
         "elliptic-friction-paper": pair("elliptic-friction-paper", "sleeve-elliptic-friction", *COARSE, *PAPER_ELLIPSE),
     }
     # Where newton does not apply.

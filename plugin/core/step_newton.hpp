@@ -137,6 +137,7 @@ struct GmresResult {
   double smallest_ritz_real = 1.0;
   Eigen::VectorXd smallest_ritz_vector;  // its Ritz vector (real part, unit length)
   bool finite = true;
+  bool converged = false;  // the residual fell to rtol
 };
 template <class Op>
 GmresResult gmres(const Op& apply, const Eigen::VectorXd& b, double rtol, int maxit, bool stop_if_unstable = false) {
@@ -176,14 +177,17 @@ GmresResult gmres(const Op& apply, const Eigen::VectorXd& b, double rtol, int ma
     g[k + 1] = -sn[k] * g[k];
     g[k] = cs[k] * g[k];
     if (breakdown || std::fabs(g[k + 1]) <= rtol * beta) {
+      out.converged = std::fabs(g[k + 1]) <= rtol * beta;
       ++k;
       break;
     }
-    // An unstable operator is reported without solving on (the caller does not use the
-    // solution then): its Ritz values are checked at 8, 16, 32, ... iterations.
+    // A clearly unstable operator (a Ritz value below -1e-3 of the largest) is reported without
+    // solving on: its Ritz values are checked at 8, 16, 32, ... iterations. (A nearly singular
+    // stable one, whose smallest Ritz values wander around zero until they settle, is solved.)
     if (stop_if_unstable && k + 1 >= 8 && ((k + 1) & k) == 0) {
       const Eigen::EigenSolver<Eigen::MatrixXd> early(H.topLeftCorner(k + 1, k + 1), false);
-      if (early.eigenvalues().real().minCoeff() <= 0) {
+      const Eigen::VectorXd re = early.eigenvalues().real();
+      if (re.minCoeff() < -1e-3 * early.eigenvalues().cwiseAbs().maxCoeff()) {
         ++k;
         break;
       }
@@ -642,7 +646,13 @@ class StepSolver {
       };
       const step_detail::GmresResult g = step_detail::gmres(apply, rhs, rtol, set.gmres_maxit, true);
       if (!g.finite && g.smallest_ritz_real > 0) return Gradient;
-      if (!(g.smallest_ritz_real > 0)) {
+      // A converged solve whose correction lowers the model's energy is taken as a Newton
+      // correction even when a Ritz value came out non-positive: near a neutral mode round-off
+      // puts the smallest ones on either side of zero (the trust region judges the move).
+      double descent = 0;
+      if (g.converged && g.finite)
+        for (Eigen::Index a = 0; a < k; ++a) descent += model[sub[(std::size_t)a]] * p_.area[sub[(std::size_t)a]] * g.x[a];
+      if (!(g.smallest_ritz_real > 0) && !(g.converged && g.finite && descent > 0)) {
         stable = false;
         if (g.smallest_ritz_vector.size() != k) return Gradient;
         Eigen::VectorXd v = g.smallest_ritz_vector;
