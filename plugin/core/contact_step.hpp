@@ -22,6 +22,38 @@
 
 namespace sma {
 
+// H S K^-1 b on every contact row, from z = L^-1 P b (SpdFactor::forward): the rows Y stands
+// for; the others (tangential rows of a frictionless problem, whose W rows are 0 and r_t stays 0)
+// are 0.
+inline Eigen::VectorXd contact_motion(const DelassusFactor& d, const Eigen::VectorXd& z) {
+  const Eigen::VectorXd motion = d.y_scaled.transpose() * z;
+  Eigen::VectorXd hu = Eigen::VectorXd::Zero(d.w.rows());
+  for (std::size_t j = 0; j < d.rows.size(); ++j) hu[d.rows[j]] = motion[(Eigen::Index)j];
+  return hu;
+}
+
+// The Delassus problem's free motion from H S u_free: q_n = -(n.u_free + gap),
+// q_t = -(t.u_free - t.u_previous) where the node may slide, else 0.
+inline Eigen::VectorXd contact_free_motion(const DelassusFactor& d, const Eigen::VectorXd& hu, span<const double> gap,
+                                           span<const double> slip_reference, span<const double> tangent_free) {
+  const Eigen::Index m = (Eigen::Index)gap.size();
+  Eigen::VectorXd q(2 * m);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    q[2 * i] = -(hu[2 * i] + gap[i]);
+    q[2 * i + 1] = tangent_free[i] != 0 && d.w(2 * i + 1, 2 * i + 1) != 0.0 ? -(hu[2 * i + 1] - slip_reference[i]) : 0.0;
+  }
+  return q;
+}
+
+// z += Y r (the rows Y stands for), so that SpdFactor::backward(z) is K^-1 (b + S H' r); nothing
+// when r = 0.
+inline void add_contact_load(const DelassusFactor& d, const Eigen::VectorXd& r, Eigen::VectorXd& z) {
+  if (!(r.lpNorm<Eigen::Infinity>() > 0)) return;
+  Eigen::VectorXd reactions((Eigen::Index)d.rows.size());
+  for (std::size_t j = 0; j < d.rows.size(); ++j) reactions[(Eigen::Index)j] = r[d.rows[j]];
+  z += d.y * reactions;
+}
+
 struct ContactStepSettings {
   double omega = 1.88, tol = 1e-10;
   int maxit = 100000, polish = 10;
@@ -43,23 +75,10 @@ inline PsorResult condensed_global_step(const SpdFactor& k, const DelassusFactor
       (Eigen::Index)tangent_free.size() != m || r.size() != 2 * m)
     throw std::invalid_argument("per-node data of unequal lengths");
   Eigen::VectorXd z = k.forward(rhs);
-  // (H S u_free) on the rows Y stands for; the others (tangential rows of a frictionless problem,
-  // whose W rows are 0 and r_t stays 0) are not needed.
-  const Eigen::VectorXd motion = d.y_scaled.transpose() * z;
-  Eigen::VectorXd hu = Eigen::VectorXd::Zero(2 * m);
-  for (std::size_t j = 0; j < d.rows.size(); ++j) hu[d.rows[j]] = motion[(Eigen::Index)j];
-  Eigen::VectorXd q(2 * m), g(m);
-  for (Eigen::Index i = 0; i < m; ++i) {
-    q[2 * i] = -(hu[2 * i] + gap[i]);
-    q[2 * i + 1] = tangent_free[i] != 0 && d.w(2 * i + 1, 2 * i + 1) != 0.0 ? -(hu[2 * i + 1] - slip_reference[i]) : 0.0;
-    g[i] = threshold[i];
-  }
+  const Eigen::VectorXd q = contact_free_motion(d, contact_motion(d, z), gap, slip_reference, tangent_free);
+  const Eigen::VectorXd g = Eigen::Map<const Eigen::VectorXd>(threshold.begin(), m);
   const PsorResult res = psor_condensed(d.w, q, g, settings.omega, settings.tol, settings.maxit, r, settings.polish);
-  if (r.lpNorm<Eigen::Infinity>() > 0) {
-    Eigen::VectorXd reactions((Eigen::Index)d.rows.size());
-    for (std::size_t j = 0; j < d.rows.size(); ++j) reactions[(Eigen::Index)j] = r[d.rows[j]];
-    z += d.y * reactions;
-  }
+  add_contact_load(d, r, z);
   k.backward(z, u);
   return res;
 }

@@ -125,9 +125,7 @@ struct StepState {
 
 namespace step_detail {
 
-inline Eigen::Map<const Eigen::VectorXd> as_vector(span<const double> s) {
-  return Eigen::Map<const Eigen::VectorXd>(s.begin(), (Eigen::Index)s.size());
-}
+inline span<const double> as_span(const Eigen::VectorXd& v) { return {v.data(), (std::size_t)v.size()}; }
 
 // GMRES from x = 0 (no restart) on a linear operator; the Ritz values of its Hessenberg matrix
 // tell whether the operator has an eigenvalue of non-positive real part in the Krylov space.
@@ -338,7 +336,7 @@ class StepSolver {
         // The gradient step; after a move along unstable directions, the one of the two that
         // leaves the smaller residual (a snap of the whole ring goes faster by the local steps).
         ++stats_.gradient_steps;
-        Search gradient = line_search(s, beta, cl, gradient_direction(s, cl), set.tol, best, false);
+        Search gradient = line_search(s, beta, cl, gradient_direction(s, cl), set.tol);
         if (gradient.ok && (!found.ok || gradient.state.residual_norm < found.state.residual_norm))
           found = std::move(gradient);
       }
@@ -418,15 +416,10 @@ class StepSolver {
       return;
     }
     const DelassusFactor& d = *p_.contact;
-    const Eigen::Index m = p_.gap.size();
     Eigen::VectorXd z = p_.stiffness->forward(rhs);
-    const Eigen::VectorXd motion = d.y_scaled.transpose() * z;
-    Eigen::VectorXd hu = Eigen::VectorXd::Zero(2 * m), q(2 * m);
-    for (std::size_t j = 0; j < d.rows.size(); ++j) hu[d.rows[j]] = motion[(Eigen::Index)j];
-    for (Eigen::Index i = 0; i < m; ++i) {
-      q[2 * i] = -(hu[2 * i] + p_.gap[i]);
-      q[2 * i + 1] = tangential(i) ? -(hu[2 * i + 1] - p_.slip_reference[i]) : 0.0;
-    }
+    const Eigen::VectorXd q = contact_free_motion(d, contact_motion(d, z), step_detail::as_span(p_.gap),
+                                                  step_detail::as_span(p_.slip_reference),
+                                                  step_detail::as_span(p_.tangent_free));
     if (!friction()) {
       run_psor(q, s);
     } else {
@@ -445,11 +438,7 @@ class StepSolver {
                                  " iterations, relative change of g " + std::to_string(change) + " > tol " +
                                  std::to_string(p_.slip_tol));
     }
-    if (s.r.lpNorm<Eigen::Infinity>() > 0) {
-      Eigen::VectorXd reactions((Eigen::Index)d.rows.size());
-      for (std::size_t j = 0; j < d.rows.size(); ++j) reactions[(Eigen::Index)j] = s.r[d.rows[j]];
-      z += d.y * reactions;
-    }
+    add_contact_load(d, s.r, z);
     p_.stiffness->backward(z, span<double>(s.u.data(), (std::size_t)s.u.size()));
     freeze_statuses(s);
   }
@@ -523,9 +512,7 @@ class StepSolver {
     Eigen::VectorXd z = p_.stiffness->forward(rhs);
     const Eigen::Index k = (Eigen::Index)s.moving.size();
     if (k > 0) {
-      const Eigen::VectorXd motion = d.y_scaled.transpose() * z;
-      Eigen::VectorXd hu = Eigen::VectorXd::Zero(p_.contact->w.rows());
-      for (std::size_t j = 0; j < d.rows.size(); ++j) hu[d.rows[j]] = motion[(Eigen::Index)j];
+      const Eigen::VectorXd hu = contact_motion(d, z);
       Eigen::VectorXd b(k);
       for (Eigen::Index a = 0; a < k; ++a) b[a] = -hu[s.moving[(std::size_t)a]];  // W dr = dq = -d(H u_free)
       const Eigen::VectorXd x = s.statuses.solve(b);
@@ -536,9 +523,7 @@ class StepSolver {
         if (row % 2 == 0 && s.slide[(std::size_t)(row / 2)] != 0.0)
           dr[row + 1] = s.slide[(std::size_t)(row / 2)] * p_.mu[row / 2] * x[a];
       }
-      Eigen::VectorXd reactions((Eigen::Index)d.rows.size());
-      for (std::size_t j = 0; j < d.rows.size(); ++j) reactions[(Eigen::Index)j] = dr[d.rows[j]];
-      z += d.y * reactions;
+      add_contact_load(d, dr, z);
     }
     p_.stiffness->backward(z, span<double>(du.data(), (std::size_t)du.size()));
   }
@@ -720,10 +705,15 @@ class StepSolver {
 
   struct Search {
     bool ok = false;
-    double change = 0;  // the change of W (trapezoid rule)
-    double ratio = 0;   // change over the quadratic model's (try_move)
+    double ratio = 0;  // W's change over the quadratic model's (try_move)
     StepState state;
   };
+  // The signed fractions of magnitudes `moved` with the variants of s.
+  static Eigen::VectorXd signed_fractions(const StepState& s, const Eigen::VectorXd& moved) {
+    Eigen::VectorXd chi(moved.size());
+    for (Eigen::Index i = 0; i < moved.size(); ++i) chi[i] = moved[i] > 0 ? s.sign[i] * moved[i] : 0.0;
+    return chi;
+  }
   // The change of W from s (at beta) to t (at moved), by the trapezoid rule on the forces at
   // both ends, on the side of held each move lies on (psi is linear there); predicted: the
   // first-order change.
@@ -758,12 +748,9 @@ class StepSolver {
     double model = 0;
     for (Eigen::Index i = 0; i < n; ++i)
       model -= p_.area[i] * (region.force[i] * step[i] + 0.5 * step[i] * curvature[i]);
-    Eigen::VectorXd trial(n);
-    for (Eigen::Index i = 0; i < n; ++i) trial[i] = moved[i] > 0 ? s.sign[i] * moved[i] : 0.0;
-    StepState t = evaluate(trial, s.r, s.threshold);
+    StepState t = evaluate(signed_fractions(s, moved), s.r, s.threshold);
     double predicted = 0;
     const double change = energy_change(s, beta, t, moved, predicted);
-    out.change = change;
     out.ratio = model < 0 ? change / model : (change < 0 ? 1.0 : 0.0);
     if ((out.ratio >= 0.1 && change < 0) || t.residual_norm <= tol || (newton && t.residual_norm <= 0.5 * best)) {
       out.ok = true;
@@ -771,44 +758,27 @@ class StepSolver {
     }
     return out;
   }
-  // Armijo backtracking along the move projected on the intervals; the change of W by the
-  // trapezoid rule on the forces at both ends. A full Newton move is also accepted when it at
-  // least halves the smallest residual of the step so far (near the solution W's change is at
-  // the level of the contact solver's tolerance; each such acceptance halves that bound, so they
-  // are finitely many and the iteration still cannot cycle).
+  // Armijo backtracking along the gradient step projected on the intervals; the change of W by
+  // the trapezoid rule on the forces at both ends (energy_change).
   Search line_search(const StepState& s, const Eigen::VectorXd& beta, const Classified& cl, const Eigen::VectorXd& d,
-                     double tol, double best, bool newton) {
+                     double tol) {
     const Eigen::Index n = beta.size();
     Search out;
     double lambda = 1.0;
     for (int halving = 0; halving < 40; ++halving, lambda *= 0.5) {
-      Eigen::VectorXd moved = beta, step = Eigen::VectorXd::Zero(n);
+      Eigen::VectorXd moved = beta;
       bool any = false;
       for (Eigen::Index i = 0; i < n; ++i) {
         if (!cl.free[(std::size_t)i]) continue;
         moved[i] = std::clamp(beta[i] + lambda * d[i], cl.lo[i], cl.hi[i]);
-        step[i] = moved[i] - beta[i];
-        any |= step[i] != 0.0;
+        any |= moved[i] != beta[i];
       }
       if (!any) return out;
-      Eigen::VectorXd trial(n);
-      for (Eigen::Index i = 0; i < n; ++i) trial[i] = moved[i] > 0 ? s.sign[i] * moved[i] : 0.0;
-      StepState t = evaluate(trial, s.r, s.threshold);
-      double change = 0, predicted = 0;
-      for (Eigen::Index i = 0; i < n; ++i) {
-        if (step[i] == 0.0) continue;
-        // The force at both ends, on the side of held the move lies on (psi is linear there).
-        const double f0 = step[i] > 0 ? s.drive[i] - s.q[i] * beta[i] + (beta[i] < s.held[i] ? s.q[i] : 0.0)
-                                      : s.drive[i] - s.q[i] * beta[i] + (beta[i] <= s.held[i] ? s.q[i] : 0.0);
-        const bool below = moved[i] < s.held[i] || (moved[i] == s.held[i] && step[i] > 0);
-        const double f1 = t.drive[i] - t.q[i] * moved[i] + (below ? t.q[i] : 0.0);
-        change -= 0.5 * p_.area[i] * (f0 + f1) * step[i];
-        predicted -= p_.area[i] * f0 * step[i];
-      }
-      if (change <= 1e-4 * predicted || t.residual_norm <= tol ||
-          (newton && halving == 0 && t.residual_norm <= 0.5 * best)) {
+      StepState t = evaluate(signed_fractions(s, moved), s.r, s.threshold);
+      double predicted = 0;
+      const double change = energy_change(s, beta, t, moved, predicted);
+      if (change <= 1e-4 * predicted || t.residual_norm <= tol) {
         out.ok = true;
-        out.change = change;
         out.state = std::move(t);
         return out;
       }
