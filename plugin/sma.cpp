@@ -430,7 +430,7 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
     p.free = Segment(data, 5 * n + 2 * nodes + dofs, dofs, "data");
     if (m > 0 && table->M() != 6) throw std::invalid_argument("the contact table must have 6 columns");
     if (contact->N() != 4 * m) throw std::invalid_argument("contact must hold tangentFree, mu and r of " + std::to_string(m) + " nodes");
-    if (stats->N() != 10) throw std::invalid_argument("stats must have 10 entries");
+    if (stats->N() != 12) throw std::invalid_argument("stats must have 12 entries");
     p.gap.resize(m);
     p.slip_reference.resize(m);
     Eigen::VectorXd threshold(m);
@@ -452,11 +452,11 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
     for (long i = 0; i < dofs; ++i) (*u)[i] = displacement[i];
     for (long i = 0; i < m; ++i) (*table)(i, 4L) = threshold[i];
     for (long i = 0; i < 2 * m; ++i) (*contact)[2 * m + i] = r[i];
-    const double values[10] = {res.converged ? 1.0 : 0.0, (double)res.iterations, (double)res.gradient_steps,
+    const double values[12] = {res.converged ? 1.0 : 0.0, (double)res.iterations, (double)res.gradient_steps,
                                (double)res.evaluations, (double)res.products, (double)res.heat_solves,
                                (double)res.stiffness_solves, (double)res.psor_sweeps, (double)res.slip_iterations,
-                               res.residual};
-    for (int k = 0; k < 10; ++k) (*stats)[k] = values[k];
+                               res.residual, (double)res.curvature_steps, (double)res.saddle_steps};
+    for (int k = 0; k < 12; ++k) (*stats)[k] = values[k];
     StepFailure() = res.failure;
     return (long)res.iterations;
   });
@@ -509,7 +509,7 @@ long RoundToFloat(KN<double>* const& x) {
   return changed;
 }
 
-double SmaPluginVersion() { return 7.0; }
+double SmaPluginVersion() { return 8.0; }
 
 // FreeFEM's time() has a resolution of one second and clock() counts CPU time; timings of the
 // scenes are wall-clock seconds from a monotonic clock.

@@ -37,7 +37,11 @@
 //   3. the move is accepted when W falls by at least a tenth of its quadratic model's prediction
 //      (W's change by the trapezoid rule on the forces at both ends: exact for a quadratic W, no
 //      energy evaluated), or when a full Newton move halves the smallest residual so far; the
-//      trust region grows or shrinks with that ratio;
+//      trust region grows or shrinks with that ratio; a Newton move to a stationary point that
+//      is not a minimum of W (GMRES solves the block but finds W concave on it: the solution of
+//      the step itself may be such a saddle, e.g. between the triangles of one layer of the
+//      front, which the nested loops converge to and an energy descent leaves) is taken only on
+//      the residual test, which cannot cycle either (the best residual halves each time);
 //   4. fall-back, always a descent direction: the preconditioned gradient step
 //      d = f / (D + q), D = (rho a |tr e| [alpha > 0] + rho L / T0) kappa, which is the nested
 //      loops' enthalpy-regularised local step, with Armijo backtracking on W: the iteration
@@ -99,12 +103,14 @@ struct StepSettings {
   int maxit = 50;       // iterations (each: one Newton or gradient move)
   int gmres_maxit = 300;
   int pdas_rounds = 12;
+  bool saddle_newton = true;  // Newton moves to a stationary point that is not a minimum of W (solve)
   std::FILE* trace = nullptr;  // one line per iteration there when set (the glue: SMA_STEP_TRACE=1)
 };
 
 struct StepResult {
   bool converged = false;
-  int iterations = 0, gradient_steps = 0, curvature_steps = 0, variant_switches = 0, evaluations = 0, products = 0;
+  int iterations = 0, gradient_steps = 0, curvature_steps = 0, saddle_steps = 0, variant_switches = 0, evaluations = 0,
+      products = 0;
   int heat_solves = 0, stiffness_solves = 0, psor_sweeps = 0, slip_iterations = 0;
   double residual = 0.0;
   std::string failure;  // why it stopped unconverged (empty when converged)
@@ -138,7 +144,8 @@ struct GmresResult {
   bool converged = false;  // the residual fell to rtol
 };
 template <class Op>
-GmresResult gmres(const Op& apply, const Eigen::VectorXd& b, double rtol, int maxit, bool stop_if_unstable = false) {
+GmresResult gmres(const Op& apply, const Eigen::VectorXd& b, double rtol, int maxit, bool stop_if_unstable = false,
+                  double atol = 0.0) {
   GmresResult out;
   const Eigen::Index n = b.size();
   out.x = Eigen::VectorXd::Zero(n);
@@ -174,8 +181,9 @@ GmresResult gmres(const Op& apply, const Eigen::VectorXd& b, double rtol, int ma
     R(k + 1, k) = 0.0;
     g[k + 1] = -sn[k] * g[k];
     g[k] = cs[k] * g[k];
-    if (breakdown || std::fabs(g[k + 1]) <= rtol * beta) {
-      out.converged = std::fabs(g[k + 1]) <= rtol * beta;
+    const double enough = std::max(rtol * beta, atol);
+    if (breakdown || std::fabs(g[k + 1]) <= enough) {
+      out.converged = std::fabs(g[k + 1]) <= enough;
       ++k;
       break;
     }
@@ -319,14 +327,24 @@ class StepSolver {
         region.hi[i] = std::min(cl.hi[i], beta[i] + radius);
       }
       Eigen::VectorXd d;
-      const Move tried = newton_direction(s, beta, region, set, d);
+      Move tried = newton_direction(s, beta, region, set, d, set.saddle_newton);
       Search found;
-      if (tried != Gradient) {
+      if (tried == SaddleNewton) {
+        // The step's solution is a stationary point of W that is not a minimum (W falls along a
+        // mode of the front that breaks the ring's symmetry, as between neighbouring triangles
+        // of one layer; the nested loops converge to it, an energy descent leaves it): the Newton
+        // move is taken when it halves the smallest residual so far, which cannot cycle, and the
+        // energy's moves are tried otherwise.
+        found = try_move(s, beta, region, d, set.tol, best, true, false);
+        if (found.ok) ++stats_.saddle_steps;
+        else tried = newton_direction(s, beta, region, set, d, false);
+      }
+      if (!found.ok && tried != Gradient) {
         if (tried == NegativeCurvature) ++stats_.curvature_steps;
         // The move against the quadratic model of W: accepted when W falls by at least a tenth
         // of the model's prediction (or the step is solved, or a Newton move halves the best
         // residual); the region grows after a good full-size move and shrinks after a poor one.
-        found = try_move(s, beta, region, d, set.tol, best, tried == Newton);
+        found = try_move(s, beta, region, d, set.tol, best, tried == Newton, true);
         const double size = d.lpNorm<Eigen::Infinity>();
         if (found.ratio > 0.75 && size >= 0.99 * radius) radius = std::min(1.0, 2 * radius);
         else if (found.ratio < 0.25) radius = std::max(1e-12, 0.25 * size);
@@ -351,7 +369,8 @@ class StepSolver {
         int nfree = 0;
         for (char f : cl.free) nfree += f;
         std::fprintf(set.trace, "step iteration %d: %s move, residual %.3e, %d free points, %d evaluations, %d products\n",
-                     stats_.iterations, tried == Newton ? "newton" : tried == NegativeCurvature ? "curvature" : "gradient",
+                     stats_.iterations,
+                     tried == Newton ? "newton" : tried == NegativeCurvature ? "curvature" : tried == SaddleNewton ? "saddle newton" : "gradient",
                      s.residual_norm, nfree, stats_.evaluations, stats_.products);
       }
     }
@@ -582,7 +601,7 @@ class StepSolver {
     }
   }
 
-  enum Move { Gradient = 0, Newton = 1, NegativeCurvature = 2 };
+  enum Move { Gradient = 0, Newton = 1, NegativeCurvature = 2, SaddleNewton = 3 };
   // The Newton move on the free points (header, step 2): rounds of an active-set method on the
   // linearised step, from the model point d (the move so far; model = the linearised force there):
   //   - GMRES on the free, unpinned points gives the Newton correction from d;
@@ -596,7 +615,7 @@ class StepSolver {
   // NegativeCurvature: they ran out on an unstable block and d is a descent direction; Gradient
   // otherwise.
   Move newton_direction(const StepState& s, const Eigen::VectorXd& beta, const Classified& cl,
-                        const StepSettings& set, Eigen::VectorXd& d) {
+                        const StepSettings& set, Eigen::VectorXd& d, bool allow_saddle) {
     const Eigen::Index n = beta.size();
     d = Eigen::VectorXd::Zero(n);
     std::vector<char> pinned((std::size_t)n, 0);
@@ -605,7 +624,7 @@ class StepSolver {
     for (Eigen::Index i = 0; i < n; ++i) any_free |= cl.free[(std::size_t)i] != 0;
     if (!any_free) return Gradient;
     const double rtol = std::max(1e-12, std::min(1e-2, s.residual_norm));
-    bool stable = false;
+    bool stable = false, saddle = false;
     Eigen::VectorXd model = cl.force;
     for (int round = 0; round < set.pdas_rounds; ++round) {
       std::vector<Eigen::Index> sub;
@@ -629,7 +648,14 @@ class StepSolver {
         for (Eigen::Index a = 0; a < k; ++a) out[a] = -df[sub[(std::size_t)a]] / scale[a];
         return out;
       };
-      const step_detail::GmresResult g = step_detail::gmres(apply, rhs, rtol, set.gmres_maxit, true);
+      // No more accuracy than the step's tolerance needs (the residual of the linearised step,
+      // in fraction units: its 2-norm bounds its max norm).
+      // The first round may be a saddle's Newton move (solve): solved on through an unstable
+      // block, up to 64 products.
+      const bool saddle_round = allow_saddle && round == 0;
+      const step_detail::GmresResult g =
+          step_detail::gmres(apply, rhs, rtol, saddle_round ? std::min(set.gmres_maxit, 64) : set.gmres_maxit,
+                             !saddle_round, 0.1 * set.tol);
       if (!g.finite && g.smallest_ritz_real > 0) return Gradient;
       // A converged solve whose correction lowers the model's energy is taken as a Newton
       // correction even when a Ritz value came out non-positive: near a neutral mode round-off
@@ -637,7 +663,9 @@ class StepSolver {
       double descent = 0;
       if (g.converged && g.finite)
         for (Eigen::Index a = 0; a < k; ++a) descent += model[sub[(std::size_t)a]] * p_.area[sub[(std::size_t)a]] * g.x[a];
-      if (!(g.smallest_ritz_real > 0) && !(g.converged && g.finite && descent > 0)) {
+      const bool solved = g.converged && g.finite;
+      if (!(g.smallest_ritz_real > 0) && solved && !(descent > 0) && saddle_round) saddle = true;
+      else if (!(g.smallest_ritz_real > 0) && !(solved && descent > 0)) {
         stable = false;
         if (g.smallest_ritz_vector.size() != k) return Gradient;
         Eigen::VectorXd v = g.smallest_ritz_vector;
@@ -684,6 +712,7 @@ class StepSolver {
       pinned = next;
       model = cl.force + force_derivative(s, d, cl.upper);
     }
+    if (saddle) return d.allFinite() ? SaddleNewton : Gradient;
     double slope = 0;
     for (Eigen::Index i = 0; i < n; ++i) slope += cl.force[i] * p_.area[i] * d[i];
     if (!d.allFinite() || !(slope > 0)) return Gradient;
@@ -736,7 +765,7 @@ class StepSolver {
   // One trust-region move d (within the region's intervals): evaluated, its W change against
   // the quadratic model's -sum area (f d + d (df/dbeta) d / 2).
   Search try_move(const StepState& s, const Eigen::VectorXd& beta, const Classified& region,
-                  const Eigen::VectorXd& d, double tol, double best, bool newton) {
+                  const Eigen::VectorXd& d, double tol, double best, bool newton, bool by_energy) {
     const Eigen::Index n = beta.size();
     Search out;
     Eigen::VectorXd moved = beta;
@@ -752,7 +781,7 @@ class StepSolver {
     double predicted = 0;
     const double change = energy_change(s, beta, t, moved, predicted);
     out.ratio = model < 0 ? change / model : (change < 0 ? 1.0 : 0.0);
-    if ((out.ratio >= 0.1 && change < 0) || t.residual_norm <= tol || (newton && t.residual_norm <= 0.5 * best)) {
+    if ((by_energy && out.ratio >= 0.1 && change < 0) || t.residual_norm <= tol || (newton && t.residual_norm <= 0.5 * best)) {
       out.ok = true;
       out.state = std::move(t);
     }

@@ -19,6 +19,7 @@ struct RadialSleeve {
   int nr = 40, steps = 400;
   double tend = 60.0, E = 85e9, nu = 0.3, rho = 7900, a = 300, latent = 3000, T0 = 210, Tc = 280;
   double C0 = 837, k = 18, g = 500, Text = 293.15, Tinit = 196, Ri = 0.050445, Hr = 0.01, pipe = 0.0505;
+  double laminate_scale = 1.0;  // > 1: a laminate band softer than the elastic accommodation
 
   // Operators.
   std::vector<double> r;
@@ -150,7 +151,7 @@ struct RadialSleeve {
     p.psor.maxit = 3;
     p.psor.polish = 0;
     p.law = sma::ThermalLaw{rho, a, latent, T0, Tc};
-    p.laminate = lambda + 2 * shear;
+    p.laminate = (lambda + 2 * shear) * laminate_scale;
     p.kappa = kappa;
     p.chi_start = chi_start;
     p.b_start = b_start;
