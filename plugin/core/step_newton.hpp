@@ -395,8 +395,8 @@ class StepSolver {
     const Eigen::Index n = p_.area.size();
     if (!p_.heat || !p_.stiffness) throw std::invalid_argument("step: the heat and stiffness factors are required");
     const Eigen::Index nodes = p_.heat->size(), dofs = p_.stiffness->size();
-    auto need = [](bool ok, const std::string& what) {
-      if (!ok) throw std::invalid_argument("step: " + what);
+    auto need = [](bool ok, const char* what) {
+      if (!ok) throw std::invalid_argument(std::string("step: ") + what);
     };
     need(p_.heat_rhs.size() == nodes && p_.heat_mask.size() == nodes, "heat right side and mask of the heat matrix's size");
     need(p_.latent.rows() == nodes && p_.latent.cols() == n, "latent load: nodes x points");
@@ -406,7 +406,8 @@ class StepSolver {
     need(p_.kappa.size() == n && p_.chi_start.size() == n && p_.b_start.size() == n, "per-point data of one length");
     need(p_.threshold_offset.size() == 0 || p_.threshold_offset.size() == n, "threshold offset per point (or none)");
     need(p_.laminate > 0, "the laminate modulus lambda + 2 mu must be > 0");
-    for (Eigen::Index i = 0; i < n; ++i) need(p_.area[i] > 0, "point " + std::to_string(i) + " has no area");
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (!(p_.area[i] > 0)) throw std::invalid_argument("step: point " + std::to_string(i) + " has no area");
     p_.law.validate();
     if (p_.contact) {
       const Eigen::Index m = p_.gap.size();
