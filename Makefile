@@ -7,6 +7,7 @@
 #   make sweep SCENE=<scene> PARAM=g VALUES='250 500 1000' [ARGS=...] [JOBS=2] [OUT=dir]
 #                                                        one option swept: table and overlay figures
 #   make bench                                           speed against error: docs/benchmarks.md
+#   make reference                                       the force curve's accuracy reference: docs/reference.md
 #   make ensemble [NP=2] [SEEDS=8] [OUT=dir] [ARGS=...]  Monte Carlo over seeds of sleeve-random-threshold on MPI
 #   make docs                                            regenerate docs/parameter-reference.md (scenes' -help)
 SHELL := /bin/bash
@@ -78,7 +79,7 @@ sleeve_opt_nr140 := $(SLEEVE_RING) -setnumber nr 140
 sliver_opt_thin := $(SLEEVE_RING) -setnumber eps 1.3e-5
 sliver_opt_degenerate := $(SLEEVE_RING) -setnumber eps 1e-8
 
-.PHONY: run test figures bench ensemble docs deps plugin meshes clean check-scene sweep
+.PHONY: run test figures bench reference ensemble docs deps plugin meshes clean check-scene sweep
 # The scenes behind the paper's figures (docs/figures.md), run at their defaults by make figures.
 FIGURE_SCENES := beam sleeve-circular sleeve-circular-single sleeve-circular-gvar sleeve-offset \
                  sleeve-elliptic sleeve-elliptic-friction sleeve-random-threshold
@@ -179,6 +180,11 @@ sweep: check-scene plugin meshes
 # Speed against error, all measured in one run: docs/benchmarks.md, results/bench/summary.json.
 bench: plugin meshes $(BENCH_MESHES)
 	@$(PYTHON) tools/bench.py
+
+# The Richardson extrapolation of the radial force curve, its assumptions tested, the on/off scheme
+# and the defaults measured against it (tools/reference_curve.py; about 40 s).
+reference: plugin meshes
+	@$(PYTHON) tools/reference_curve.py
 
 # Monte Carlo over the seeds of sleeve-random-threshold, seeds round-robin over NP MPI ranks
 # (docs/ensembles.md). OpenMPI refuses root without the two ALLOW variables; an idle rank yields

@@ -777,7 +777,10 @@ def write_doc(r, plt):
       "the whole 150 s (`l1`) the constant tail dilutes it about 30 times; both are tabulated. "
       "L1 rather than a max norm: a max norm is dominated by the one-step shift of the jumps at the "
       "reverse transformation, which L1 weighs by dt. The final pressure is compared with Lame's closed form for the all-austenite, elastic "
-      "final state (thick ring on a rigid shaft, interference = pipe radius - mesh inner radius).")
+      "final state (thick ring on a rigid shaft, interference = pipe radius - mesh inner radius). "
+      "This reference is the scheme's own finest run: docs/reference.md (make reference) measures the "
+      "same errors against the Richardson extrapolation of the radial curve, its assumptions tested, "
+      "and the on/off scheme against it.")
     w("")
     w("## Refinement study of the force curve")
     w("")
