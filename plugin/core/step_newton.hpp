@@ -625,6 +625,7 @@ class StepSolver {
     for (Eigen::Index i = 0; i < n; ++i) any_free |= cl.free[(std::size_t)i] != 0;
     if (!any_free) return Gradient;
     const double rtol = std::max(1e-12, std::min(1e-2, s.residual_norm));
+    double first_rhs = 0;
     bool stable = false, saddle = false;
     Eigen::VectorXd model = cl.force;
     for (int round = 0; round < set.pdas_rounds; ++round) {
@@ -652,11 +653,16 @@ class StepSolver {
       // No more accuracy than the step's tolerance needs (the residual of the linearised step,
       // in fraction units: its 2-norm bounds its max norm).
       // The first round may be a saddle's Newton move (solve): solved on through an unstable
-      // block, up to 64 products.
+      // block, up to 64 products (on a nearly singular stable block the partial solution is
+      // still a descent move; the cap measured cheaper than solving on: docs/parameters.md).
+      // Later rounds (after pinning) solve for the change of the move to the first round's
+      // accuracy, rtol of its right side, not to rtol of their own (smaller) one.
       const bool saddle_round = allow_saddle && round == 0;
+      if (round == 0) first_rhs = rhs.norm();
+      const double absolute = std::max(0.1 * set.tol, round > 0 ? rtol * first_rhs : 0.0);
       const step_detail::GmresResult g =
           step_detail::gmres(apply, rhs, rtol, saddle_round ? std::min(set.gmres_maxit, 64) : set.gmres_maxit,
-                             !saddle_round, 0.1 * set.tol);
+                             !saddle_round, absolute);
       if (!g.finite && g.smallest_ritz_real > 0) return Gradient;
       // A converged solve whose correction lowers the model's energy is taken as a Newton
       // correction even when a Ritz value came out non-positive: near a neutral mode round-off
