@@ -649,7 +649,8 @@ def write_report(args, rows, best, heat, rnd, best_sp, rnd_ins, on_c, on_g, on_f
         hpass[k] = (sum(t), t[0])
     best_h = max(hk, key=lambda k: hpass[k])
     L.append("Heat choice: statements S8, S8b, S9c passed: " + ", ".join(
-        "%s %d" % (k, hpass[k][0]) for k in hk) + " (ties: S8, the reference scene's own).")
+        "%s %d" % (k, hpass[k][0]) for k in hk) + " (ties: S8, the reference scene's own; then the outer face nearest the printed g = 500, "
+             "the order of the list).")
     L.append("")
     L.append("## Chosen set")
     L.append("")
