@@ -8,6 +8,7 @@
 #                                                        one option swept: table and overlay figures
 #   make bench                                           speed against error: docs/benchmarks.md
 #   make reference                                       the force curve's accuracy reference: docs/reference.md
+#   make paper-scale                                     fit a and the open choices to the paper's statements: docs/paper-scale.md
 #   make ensemble [NP=2] [SEEDS=8] [OUT=dir] [ARGS=...]  Monte Carlo over seeds of sleeve-random-threshold on MPI
 #   make docs                                            regenerate docs/parameter-reference.md (scenes' -help)
 SHELL := /bin/bash
@@ -79,7 +80,7 @@ sleeve_opt_nr140 := $(SLEEVE_RING) -setnumber nr 140
 sliver_opt_thin := $(SLEEVE_RING) -setnumber eps 1.3e-5
 sliver_opt_degenerate := $(SLEEVE_RING) -setnumber eps 1e-8
 
-.PHONY: run test figures bench reference ensemble docs deps plugin meshes clean check-scene sweep
+.PHONY: run test figures bench reference paper-scale ensemble docs deps plugin meshes clean check-scene sweep
 # The scenes behind the paper's figures (docs/figures.md), run at their defaults by make figures.
 FIGURE_SCENES := beam sleeve-circular sleeve-circular-single sleeve-circular-gvar sleeve-offset \
                  sleeve-elliptic sleeve-elliptic-friction sleeve-random-threshold
@@ -185,6 +186,11 @@ bench: plugin meshes $(BENCH_MESHES)
 # and the defaults measured against it (tools/reference_curve.py; about 40 s).
 reference: plugin meshes
 	@$(PYTHON) tools/reference_curve.py
+
+# The paper's own scale: a, the faces' heat exchange and the random spread fitted to the paper's
+# statements (tools/paper_scale_fit.py, about 12 min; runs in /tmp/paper-scale-fit).
+paper-scale: plugin meshes
+	@$(PYTHON) tools/paper_scale_fit.py
 
 # Monte Carlo over the seeds of sleeve-random-threshold, seeds round-robin over NP MPI ranks
 # (docs/ensembles.md). OpenMPI refuses root without the two ALLOW variables; an idle rank yields

@@ -17,11 +17,21 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace sma {
+
+namespace psor_detail {
+// A number for a message, with its significant digits (std::to_string prints 1e-9 as 0.000000).
+inline std::string number(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", x);
+  return text;
+}
+}  // namespace psor_detail
 
 struct PsorResult {
   int iterations = 0;
@@ -124,8 +134,9 @@ inline PsorResult psor_condensed(const Eigen::MatrixXd& W, const Eigen::VectorXd
     // A support may block the tangential motion (a node on a symmetry cut): W_tt = 0 is then
     // allowed with g = 0, and r_t stays 0.
     if (!(W(2 * i + 1, 2 * i + 1) > 0.0) && !(W(2 * i + 1, 2 * i + 1) == 0.0 && g[i] == 0.0))
-      throw std::invalid_argument("psor: Delassus tangential diagonal not positive at contact node " +
-                                  std::to_string(i) + " with slip threshold " + std::to_string(g[i]));
+      throw std::invalid_argument("psor: Delassus tangential diagonal " + psor_detail::number(W(2 * i + 1, 2 * i + 1)) +
+                                  " not positive at contact node " + std::to_string(i) + " with slip threshold " +
+                                  psor_detail::number(g[i]) + " (a blocked tangential motion, W_tt = 0, needs threshold 0)");
   }
   PsorResult result;
   Eigen::VectorXd w = W * r - q;  // kept up to date column by column

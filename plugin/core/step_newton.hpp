@@ -104,6 +104,7 @@ struct StepSettings {
   int gmres_maxit = 300;
   int pdas_rounds = 12;
   bool saddle_newton = true;  // Newton moves to a stationary point that is not a minimum of W (solve)
+  int stall = 10;  // iterations without halving the residual that stop the step unconverged
   std::FILE* trace = nullptr;  // one line per iteration there when set (the glue: SMA_STEP_TRACE=1)
 };
 
@@ -145,7 +146,7 @@ struct GmresResult {
 };
 template <class Op>
 GmresResult gmres(const Op& apply, const Eigen::VectorXd& b, double rtol, int maxit, bool stop_if_unstable = false,
-                  double atol = 0.0) {
+                  double atol = 0.0, int stable_cap = std::numeric_limits<int>::max()) {
   GmresResult out;
   const Eigen::Index n = b.size();
   out.x = Eigen::VectorXd::Zero(n);
@@ -190,10 +191,15 @@ GmresResult gmres(const Op& apply, const Eigen::VectorXd& b, double rtol, int ma
     // A clearly unstable operator (a Ritz value below -1e-3 of the largest) is reported without
     // solving on: its Ritz values are checked at 8, 16, 32, ... iterations. (A nearly singular
     // stable one, whose smallest Ritz values wander around zero until they settle, is solved.)
-    if (stop_if_unstable && k + 1 >= 8 && ((k + 1) & k) == 0) {
+    // stable_cap: at that many iterations an operator that does not look clearly unstable is
+    // left unsolved (its partial solution is still a descent move); a clearly unstable one is
+    // solved on to maxit, since a saddle's Newton move needs the solution itself.
+    const bool at_check = stop_if_unstable && k + 1 >= 8 && ((k + 1) & k) == 0;
+    if (at_check || k + 1 == stable_cap) {
       const Eigen::EigenSolver<Eigen::MatrixXd> early(H.topLeftCorner(k + 1, k + 1), false);
       const Eigen::VectorXd re = early.eigenvalues().real();
-      if (re.minCoeff() < -1e-3 * early.eigenvalues().cwiseAbs().maxCoeff()) {
+      const bool unstable = re.minCoeff() < -1e-3 * early.eigenvalues().cwiseAbs().maxCoeff();
+      if ((at_check && unstable) || (k + 1 == stable_cap && !unstable)) {
         ++k;
         break;
       }
@@ -317,7 +323,16 @@ class StepSolver {
     switch_variants(s);
     double best = s.residual_norm;  // the smallest residual so far (the watchdog's)
     double radius = 1.0;            // the trust region, fraction units (max norm)
+    // Progress: the iteration at which the residual last fell to half of its value there. A step
+    // that makes none for `stall` iterations stops (the caller's fall-back takes it over: at
+    // the paper's scale such steps crept for their whole 50 iterations).
+    double mark = s.residual_norm;
+    int marked = 0;
     while (s.residual_norm > set.tol && stats_.iterations < set.maxit) {
+      if (stats_.iterations - marked >= set.stall) {
+        stats_.failure = "the residual did not halve in " + std::to_string(set.stall) + " iterations";
+        break;
+      }
       ++stats_.iterations;
       const Eigen::VectorXd beta = s.chi.cwiseAbs();
       const Classified cl = classify(s, beta);
@@ -365,6 +380,7 @@ class StepSolver {
       s = std::move(found.state);
       switch_variants(s);
       best = std::min(best, s.residual_norm);
+      if (s.residual_norm <= 0.5 * mark) mark = s.residual_norm, marked = stats_.iterations;
       if (set.trace) {
         int nfree = 0;
         for (char f : cl.free) nfree += f;
@@ -653,16 +669,18 @@ class StepSolver {
       // No more accuracy than the step's tolerance needs (the residual of the linearised step,
       // in fraction units: its 2-norm bounds its max norm).
       // The first round may be a saddle's Newton move (solve): solved on through an unstable
-      // block, up to 64 products (on a nearly singular stable block the partial solution is
-      // still a descent move; the cap measured cheaper than solving on: docs/parameters.md).
+      // block (up to gmres_maxit products: at the paper's scale such blocks took 68-119), while
+      // a block that does not look clearly unstable stops at 64 (nearly singular and stable, its
+      // partial solution is still a descent move; the cap measured cheaper than solving on:
+      // docs/parameters.md).
       // Later rounds (after pinning) solve for the change of the move to the first round's
       // accuracy, rtol of its right side, not to rtol of their own (smaller) one.
       const bool saddle_round = allow_saddle && round == 0;
       if (round == 0) first_rhs = rhs.norm();
       const double absolute = std::max(0.1 * set.tol, round > 0 ? rtol * first_rhs : 0.0);
       const step_detail::GmresResult g =
-          step_detail::gmres(apply, rhs, rtol, saddle_round ? std::min(set.gmres_maxit, 64) : set.gmres_maxit,
-                             !saddle_round, absolute);
+          step_detail::gmres(apply, rhs, rtol, set.gmres_maxit, !saddle_round, absolute,
+                             saddle_round ? 64 : std::numeric_limits<int>::max());
       if (!g.finite && g.smallest_ritz_real > 0) return Gradient;
       // A converged solve whose correction lowers the model's energy is taken as a Newton
       // correction even when a Ritz value came out non-positive: near a neutral mode round-off

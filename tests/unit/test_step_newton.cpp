@@ -298,6 +298,28 @@ TEST(StepNewton, SaddleSolutionsReachedByNewton) {
   RecordProperty("saddle_moves", saddle);
 }
 
+// The soft cap of the saddle round: at stable_cap products a stable operator is left unsolved,
+// a clearly unstable one is solved on (a saddle's Newton move needs its solution).
+TEST(StepNewton, GmresStableCapStopsOnlyStableOperators) {
+  const int n = 60;
+  Eigen::VectorXd diag(n), b = Eigen::VectorXd::Ones(n);
+  for (int i = 0; i < n; ++i) diag[i] = 1.0 + i;  // spread spectrum: GMRES needs about n products
+  auto stable = [&](const Eigen::VectorXd& x) { return Eigen::VectorXd(diag.cwiseProduct(x)); };
+  const sma::step_detail::GmresResult capped = sma::step_detail::gmres(stable, b, 1e-12, n, false, 0.0, 8);
+  EXPECT_EQ(capped.iterations, 8);
+  EXPECT_FALSE(capped.converged);
+  Eigen::VectorXd shifted = diag;
+  shifted.array() -= 10.5;  // ten eigenvalues below zero, clearly (-9.5 against 49.5)
+  auto unstable = [&](const Eigen::VectorXd& x) { return Eigen::VectorXd(shifted.cwiseProduct(x)); };
+  const sma::step_detail::GmresResult solved = sma::step_detail::gmres(unstable, b, 1e-12, n, false, 0.0, 8);
+  EXPECT_TRUE(solved.converged);
+  EXPECT_GT(solved.iterations, 8);
+  Eigen::VectorXd residual = shifted.cwiseProduct(solved.x);
+  residual -= b;
+  EXPECT_LE(residual.norm(), 1e-10 * b.norm());
+  EXPECT_LT(solved.smallest_ritz_real, -9.0);
+}
+
 TEST(StepNewton, GmresSolvesAndReportsAnUnstableOperator) {
   Eigen::MatrixXd A(3, 3);
   A << 4, 1, 0, 1, 3, 1, 0, 1, 2;
