@@ -37,7 +37,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools"))
 
-from checklib import KELVIN_AT_0C, ROOT, TEST_RESULTS, check, finish, record, run_scene, sleeve_outputs, sleeve_geometry  # noqa: E402
+from checklib import KELVIN_AT_0C, REDUCED, ROOT, SLEEVE_SCENES, TEST_RESULTS, check, finish, record, run_scene, sleeve_outputs, sleeve_geometry  # noqa: E402
 from lame import lame_pressure  # noqa: E402
 
 COARSE = ["-mesh", "meshes/sleeve-coarse.msh", "-quiet", "1"]
@@ -49,7 +49,8 @@ INTERFERENCE = sleeve_geometry()["pipe"] - RING_INNER  # m, the sleeve scenes' d
 def run_failing(scene, out_name, *args):
     """Runs a scene that may fail; returns (exit code, stderr)."""
     out = os.path.join(TEST_RESULTS, out_name)
-    done = subprocess.run([os.path.join(ROOT, "tools", "ff"), f"edp/scenes/{scene}.edp", "-out", out, *args],
+    scale = REDUCED if scene in SLEEVE_SCENES and "-scale" not in args else []
+    done = subprocess.run([os.path.join(ROOT, "tools", "ff"), f"edp/scenes/{scene}.edp", "-out", out, *scale, *args],
                           cwd=ROOT, capture_output=True, text=True)
     return done.returncode, done.stderr + done.stdout
 

@@ -32,7 +32,7 @@ import time
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools"))
 
-from checklib import ROOT, TEST_RESULTS, check, finish, record, rows, sleeve_outputs  # noqa: E402
+from checklib import REDUCED, ROOT, TEST_RESULTS, check, finish, record, rows, sleeve_outputs  # noqa: E402
 from lame import lame_pressure  # noqa: E402
 
 COARSE = ["-mesh", "meshes/sleeve-coarse.msh", "-steps", "600", "-quiet", "1"]
@@ -53,7 +53,9 @@ def run(job):
     returns (name, out, stdout, stderr, exit code)."""
     name, script, args = job
     out = os.path.join(TEST_RESULTS, f"variant-sleeve-{name}")
-    p = subprocess.run([os.path.join(ROOT, "tools", "ff"), script, "-out", out, *args], cwd=ROOT,
+    # The variants run at -scale reduced (their sleeveDefaults); the scenes they are compared with too.
+    scale = REDUCED if script.startswith("edp/scenes/sleeve-") and "-scale" not in args else []
+    p = subprocess.run([os.path.join(ROOT, "tools", "ff"), script, "-out", out, *scale, *args], cwd=ROOT,
                        capture_output=True, text=True)
     return name, out, p.stdout, p.stderr, p.returncode
 

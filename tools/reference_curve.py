@@ -75,7 +75,9 @@ def run(script, out, args):
     """tools/ff script -out out -quiet 1 args; returns the history (t, pressure_mean,
     fraction_austenite as numpy arrays) and the wall time. Fails naming the run and its output."""
     os.makedirs(out, exist_ok=True)
-    command = [os.path.join(ROOT, "tools", "ff"), script, "-out", out, "-quiet", "1", *map(str, args)]
+    # The reference is the reduced scale's (docs/reference.md): -scale reduced unless args say.
+    scale = ["-scale", "reduced"] if "-scale" not in args else []
+    command = [os.path.join(ROOT, "tools", "ff"), script, "-out", out, "-quiet", "1", *scale, *map(str, args)]
     start = time.perf_counter()
     proc = subprocess.run(command, cwd=ROOT, capture_output=True, text=True)
     wall = time.perf_counter() - start

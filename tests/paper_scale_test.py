@@ -1,0 +1,135 @@
+#!/usr/bin/python3
+"""The figure scenes at their defaults, the paper's scale (-scale paper: the 5 cm ring on the
+5.05 cm pipe, a = 2625 fitted to the paper's statements, docs/paper-scale.md), against the paper's
+statements that the fit found them to agree with (section 4; docs/paper-scale.md's ids):
+
+  - S1-S3, sleeve-circular (Fig. 12): zero force before contact, then linear in T while the ring
+    is martensite, jumps while it reverts, constant once austenite (checklib.four_phases); the
+    final pressure uniform and equal to Lame's shrink fit of the 0.5 mm interference (plane
+    strain, the closed form of tools/lame.py) within 0.2 %: of order 0.1 GPa, the paper's axis;
+  - S4b, sleeve-circular-gvar (Fig. 18-19): zero force before contact, a long contact stage while
+    martensite (not linear in T here: R^2 0.96, recorded), constant once austenite, the same final
+    level (0.1 %), austenite for good earlier than with constant g;
+  - S6, sleeve-elliptic (Fig. 26-27): contact starts on the major axis (y) steps before the minor
+    axis (x) touches, and the major axis' pressure falls back (the paper's "relachement") by more
+    than 10 % of its maximum before that; the final pressure nearly uniform (within 3 %), higher
+    on the major axis, and below the circular case's;
+  - S5, sleeve-offset (Fig. 22-23, half-ring coarse mesh): the final pressure uniform within 5 %
+    and within 1 % of the circular case's level;
+  - S9, sleeve-random-threshold (Fig. 34): the reversion starts within 2.5 K of the paper's -25 C.
+And the reduced scale is a preset: -scale reduced gives back the printed a = 300 and the meshes'
+55 um interference. Records results/checks/paper_scale.json.
+"""
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools"))
+
+from checklib import (KELVIN_AT_0C, check, finish, four_phases, r_squared, record, run_scene,  # noqa: E402
+                      sleeve_geometry, sleeve_outputs)
+from lame import lame_pressure  # noqa: E402
+
+PAPER = ["-scale", "paper"]  # the default, stated so that run_scene does not pin the reduced scale
+
+
+def point_curve(run, axis):
+    return ([float(r[f"T_{axis}_K"]) for r in run["points"]], [float(r[f"pressure_{axis}_Pa"]) for r in run["points"]])
+
+
+def stages(label, run):
+    hist = run["history"]
+    T, p = point_curve(run, "x_axis")
+    austenite = [float(r["fraction_austenite"]) for r in hist]
+    first_contact = next(i for i, r in enumerate(hist) if int(r["contact_nodes"]) > 0)
+    return four_phases(label, T, p, austenite, first_contact)
+
+
+def main():
+    figures = {}
+    circ = sleeve_outputs(run_scene("sleeve-circular", "paper-circular", *PAPER, "-quiet", "1", "-vtkevery", "0"))
+    s = circ["summary"]
+    prm = s["parameters"]
+    check(prm["scale"] == "paper" and prm["a"] == 2625, f"the default scale is the paper's: {prm['scale']}, a = {prm['a']}")
+    figures["circular"] = stages("sleeve-circular (paper scale)", circ)
+    Ri = prm["ring_inner_radius"]
+    Ro = Ri + sleeve_geometry()["Hr"]  # the ring's thickness: the meshes' (stretched radially to Ri)
+    lame = lame_pressure(prm["E"], prm["nu"], Ri, Ro, prm["pipe_A"] - Ri)
+    final = s["final_pressure_mean"]
+    check(abs(prm["pipe_A"] - Ri - 5e-4) < 1e-9 and abs(final / lame - 1) <= 2e-3
+          and s["final_pressure_non_uniformity"] <= 0.01,
+          f"S3: final pressure {final / 1e9:.4f} GPa, Lame's for the 0.5 mm interference {lame / 1e9:.4f} GPa "
+          f"({final / lame - 1:+.2e}), uniform within {s['final_pressure_non_uniformity']:.1e}")
+    figures["circular"].update(final_pressure_Pa=final, lame_Pa=lame)
+
+    gvar = sleeve_outputs(run_scene("sleeve-circular-gvar", "paper-gvar", *PAPER, "-quiet", "1", "-vtkevery", "0"))
+    # Its stages on the mean pressure against the inner surface's mean temperature (the heat
+    # exchange now differs along the surface, the x axis' point alone is not the ring's curve).
+    hist = gvar["history"]
+    p = [float(r["pressure_mean"]) for r in hist]
+    T = [float(r["T_inner_mean"]) for r in hist]
+    contact = next(i for i, v in enumerate(p) if v > 0)
+    onset = next(i for i, r in enumerate(hist) if float(r["fraction_austenite"]) > 0)
+    austenite = max(i for i, r in enumerate(hist) if float(r["fraction_austenite"]) < 1) + 1
+    r2, _ = r_squared(T[contact:onset], p[contact:onset])
+    spread = (max(p[austenite:]) - min(p[austenite:])) / p[-1]
+    # (The stage between is not linear here: R^2 0.96; recorded, not asserted: docs/figures.md.)
+    check(contact >= 3 and onset - contact >= 50 and spread < 1e-6,
+          f"S4b: variable g: zero force over {contact} steps, contact while martensite over {onset - contact} "
+          f"steps (R^2 of the mean pressure in T {r2:.3f}), constant after step {austenite + 1} (spread {spread:.1e})")
+    figures["gvar"] = {"zero_steps": contact, "linear_steps": onset - contact, "linear_r2": r2,
+                       "all_austenite_step": austenite + 1}
+    fg = gvar["summary"]["final_pressure_mean"]
+    check(abs(fg / final - 1) <= 1e-3 and figures["gvar"]["all_austenite_step"] < figures["circular"]["all_austenite_step"],
+          f"S4b: variable g ends at the same level ({fg / final - 1:+.1e}) and earlier: austenite for good at step "
+          f"{figures['gvar']['all_austenite_step']} against {figures['circular']['all_austenite_step']}")
+
+    ell = sleeve_outputs(run_scene("sleeve-elliptic", "paper-elliptic", *PAPER, "-quiet", "1", "-vtkevery", "0"))
+    _, p_minor = point_curve(ell, "x_axis")
+    _, p_major = point_curve(ell, "y_axis")
+    major_first = next(i for i, v in enumerate(p_major) if v > 0)
+    minor_first = next(i for i, v in enumerate(p_minor) if v > 0)
+    peak = max(p_major[:minor_first + 1])
+    fall = (peak - p_major[minor_first]) / peak
+    check(major_first + 5 < minor_first and fall > 0.10,
+          f"S6: contact on the major axis at step {major_first + 1}, the minor axis at {minor_first + 1}; the major "
+          f"axis' pressure falls {100 * fall:.0f} % of its maximum before (the paper's loosening)")
+    es = ell["summary"]
+    ratio = p_major[-1] / p_minor[-1] - 1
+    check(0 < ratio < 0.03 and es["final_pressure_mean"] < final,
+          f"S6b: final pressure nearly uniform, {100 * ratio:+.2f} % higher on the major axis, mean "
+          f"{es['final_pressure_mean'] / 1e9:.4f} GPa below the circular {final / 1e9:.4f} GPa")
+    figures["elliptic"] = {"major_first_contact_step": major_first + 1, "minor_first_contact_step": minor_first + 1,
+                           "major_fall": fall, "major_over_minor": ratio,
+                           "final_over_circular": es["final_pressure_mean"] / final}
+
+    off = sleeve_outputs(run_scene("sleeve-offset", "paper-offset", *PAPER, "-quiet", "1", "-vtkevery", "0",
+                                   "-mesh", "meshes/sleeve-half-coarse.msh", "-steps", "750"))
+    os_ = off["summary"]
+    check(os_["parameters"].get("offset", 5e-4) == 5e-4 and os_["final_pressure_non_uniformity"] <= 0.05
+          and abs(os_["final_pressure_mean"] / final - 1) <= 0.01,
+          f"S5: off-centre by the paper's 0.05 cm, the final pressure uniform within "
+          f"{100 * os_['final_pressure_non_uniformity']:.1f} % and {100 * (os_['final_pressure_mean'] / final - 1):+.2f} % "
+          f"from the circular case's")
+    figures["offset"] = {"non_uniformity": os_["final_pressure_non_uniformity"],
+                         "final_over_circular": os_["final_pressure_mean"] / final,
+                         "step_fallbacks": os_.get("step_fallbacks", 0)}
+
+    rnd = sleeve_outputs(run_scene("sleeve-random-threshold", "paper-random", *PAPER, "-quiet", "1", "-vtkevery", "0"))
+    hist = rnd["history"]
+    onset = next(r for r in hist if float(r["fraction_austenite"]) > 0)
+    onset_C = float(onset["T_inner_mean"]) - KELVIN_AT_0C
+    check(abs(onset_C - (-25.0)) <= 2.5, f"S9: the random threshold's reversion starts at {onset_C:.1f} C (paper: -25 C)")
+    figures["random"] = {"reversion_onset_C": onset_C, "seed": rnd["summary"].get("seed")}
+
+    red = sleeve_outputs(run_scene("sleeve-circular", "paper-reduced", "-scale", "reduced", "-quiet", "1",
+                                   "-vtkevery", "0", "-steps", "150"))["summary"]["parameters"]
+    interference = red["pipe_A"] - red["ring_inner_radius"]
+    check(red["scale"] == "reduced" and red["a"] == 300 and abs(interference - 55e-6) < 1e-9,
+          f"-scale reduced: a = {red['a']}, interference {1e6 * interference:.1f} um")
+    record("paper_scale", figures)
+    finish()
+
+
+if __name__ == "__main__":
+    main()
