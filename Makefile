@@ -3,7 +3,7 @@
 #                                                        (SCENE may also name a variant of edp/variants)
 #                                                        (ARGS=-help: list the scene's options only)
 #   make test                                            install, build, pass every test (ctest)
-#   make figures                                         every paper figure beside ours: docs/figures.md
+#   make figures                                         the paper's claims, each figure beside ours: docs/figures.md
 #   make sweep SCENE=<scene> PARAM=g VALUES='250 500 1000' [ARGS=...] [JOBS=2] [OUT=dir]
 #                                                        one option swept: table and overlay figures
 #   make bench                                           speed against error: docs/benchmarks.md
@@ -211,6 +211,7 @@ ensemble: plugin meshes
 figures: test
 	@for scene in $(FIGURE_SCENES); do \
 	  $(MAKE) --no-print-directory run SCENE=$$scene ARGS='-quiet 1' || exit 1; done
+	@$(PYTHON) tools/claims.py --run
 	@$(PYTHON) tools/figures.py
 
 # Every option of every scene, variant, benchmark and the ensemble, as each prints them with

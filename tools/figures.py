@@ -15,6 +15,7 @@ import sys
 from plot_sleeve import coincident_groups, inner_surface, point_labels, read_csv, translation_along_x
 from units import KELVIN_AT_0C
 from fits import r_squared  # noqa: E402
+import claims  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RESULTS = os.path.join(ROOT, "results")
@@ -165,6 +166,10 @@ def main():
            "by 55/500, so their forces are about a tenth of the defaults' (16.9 against 156 MPa). Forces",
            "are per metre of thickness divided by the contact length (Pa), plotted in MPa (the paper",
            "plots GPa); the figures and their files: docs/outputs.md.", ""]
+
+    # ---- The claims, statement by statement (tools/claims.py) ----
+    out += claims.table()
+    out += ["## Figure by figure", ""]
 
     # ---- Beam (Fig. 9-10) ----
     beam = checks("beam_dc_iterations")
