@@ -94,7 +94,7 @@ $(FASTCLOCK): plugin/fastclock.c
 	@cc -O2 -shared -fPIC -Wall -Werror plugin/fastclock.c -o $@
 $(PLUGIN): $(PLUGIN_SOURCES)
 	@mkdir -p plugin/build
-	@cd plugin/build && ff-c++ CXX=$(CURDIR)/tools/cxx17 ../sma.cpp -I/usr/include/eigen3 -I.. > build.log 2>&1 \
+	@cd plugin/build && ff-c++ CXX=../../tools/cxx17 ../sma.cpp -I/usr/include/eigen3 -I.. > build.log 2>&1 \
 	  || { cat build.log; echo "error: building the plugin failed (plugin/build/build.log)" >&2; exit 1; }
 	@test -f $(PLUGIN) || { cat plugin/build/build.log; echo "error: ff-c++ made no $(PLUGIN)" >&2; exit 1; }
 	@echo "built $(PLUGIN)"
@@ -149,7 +149,7 @@ run: check-scene plugin meshes
 # A checkout copied or moved elsewhere keeps a build/CMakeCache.txt naming the old folder, which
 # cmake refuses: such a build/ is another checkout's and is rebuilt from scratch.
 test: plugin meshes
-	@if [ -f build/CMakeCache.txt ] && ! grep -qx "CMAKE_HOME_DIRECTORY:INTERNAL=$(CURDIR)" build/CMakeCache.txt; then \
+	@if [ -f build/CMakeCache.txt ] && ! grep -qxF "CMAKE_HOME_DIRECTORY:INTERNAL=$$(pwd -P)" build/CMakeCache.txt; then \
 	  echo "build/ was configured for another folder ($$(sed -n 's/^CMAKE_HOME_DIRECTORY:INTERNAL=//p' build/CMakeCache.txt)): rebuilding it"; \
 	  rm -rf build; fi
 	@mkdir -p build && cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > build/cmake.log 2>&1 || \
@@ -204,7 +204,7 @@ ensemble: export RUN_FIXED := -v 0 -seeds $(value SEEDS) -out $(value OUT)
 ensemble: export RUN_LAUNCHER := ff-mpirun -np $(value NP)
 ensemble: plugin meshes
 	@OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_mpi_yield_when_idle=1 \
-	  FF_INCLUDEPATH="$(CURDIR)/edp/lib;$(CURDIR)/edp/model;$(CURDIR)/edp/solvers;$(CURDIR)/edp/problems;/usr/include/freefem++/idp;./" \
+	  FF_INCLUDEPATH="$$(pwd -P)/edp/lib;$$(pwd -P)/edp/model;$$(pwd -P)/edp/solvers;$$(pwd -P)/edp/problems;/usr/include/freefem++/idp;./" \
 	  $(PYTHON) tools/run_scene.py edp/ensemble/sleeve-random-ensemble.edp results/sleeve-random-ensemble \
 	  $(PYTHON) tools/plot_ensemble.py
 

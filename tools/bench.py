@@ -619,7 +619,10 @@ def write_doc(r, plt):
       f"FreeFEM {m['freefem']}. Every number below comes from that one run; the raw figures are in "
       f"`results/bench/summary.json`. Wall times are whole processes (FreeFEM start, mesh, assembly, "
       f"factorisation, time loop, output) unless marked *loop* (the time loop alone, the scene's "
-      f"`wall_seconds`). Bench took {r['bench_wall_seconds']:.0f} s." + (" **Quick mode: small grid.**" if r["quick"] else ""))
+      f"`wall_seconds`). Bench took {r['bench_wall_seconds']:.0f} s. The sleeve scenes run at `-scale reduced` "
+      f"(the printed a = 300 on a 55 um interference, where these studies were built: docs/parameters.md, "
+      f"scale); at the default, the paper's scale, sleeve-circular's step solver does about 3 times the "
+      f"products (3010 against 1077)." + (" **Quick mode: small grid.**" if r["quick"] else ""))
     w("")
     w("## Goals")
     w("")

@@ -1,0 +1,54 @@
+#!/usr/bin/python3
+"""The checkout works under a path no shell may see: a folder whose name holds a space, both
+quotes, `$(...)` command syntax, a backquote and UTF-8. The tracked files of this working tree are
+copied there; `make plugin` builds the plugin and `tools/ff` runs a short sleeve-radial there.
+Asserts: both exit 0, the run writes its summary.json, and the command in the name never ran (no
+file named INJECTED appears, anywhere under the test's folder or in the build's working folders).
+Takes about a minute (the plugin's compilation).
+"""
+import os
+import shutil
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+from checklib import ROOT, TEST_RESULTS, check, finish, record  # noqa: E402
+
+ODD = "odd p'q\"$(touch INJECTED)`touch INJECTED`é"
+
+
+def main():
+    base = os.path.join(TEST_RESULTS, "odd-path")
+    shutil.rmtree(base, ignore_errors=True)
+    checkout = os.path.join(base, ODD, "repo")
+    files = subprocess.run(["git", "ls-files", "-z"], cwd=ROOT, capture_output=True, check=True).stdout
+    for name in filter(None, files.decode().split("\0")):
+        src = os.path.join(ROOT, name)
+        if not os.path.isfile(src):
+            continue  # a file deleted in the working tree
+        dst = os.path.join(checkout, name)
+        os.makedirs(os.path.dirname(dst), exist_ok=True)
+        shutil.copy2(src, dst)
+    build = subprocess.run(["make", "--no-print-directory", "plugin"], cwd=checkout, capture_output=True, text=True)
+    check(build.returncode == 0 and os.path.isfile(os.path.join(checkout, "plugin", "build", "sma.so")),
+          f"make plugin under {checkout!r}: exit {build.returncode}"
+          + ("" if build.returncode == 0 else f": {(build.stdout + build.stderr)[-600:]}"))
+    out = os.path.join(checkout, "results", "radial")
+    run = subprocess.run([os.path.join(checkout, "tools", "ff"), "edp/scenes/sleeve-radial.edp", "-steps", "60",
+                          "-nr", "20", "-quiet", "1", "-out", out], cwd=checkout, capture_output=True, text=True)
+    check(run.returncode == 0 and os.path.isfile(os.path.join(out, "summary.json")),
+          f"tools/ff edp/scenes/sleeve-radial.edp there: exit {run.returncode}"
+          + ("" if run.returncode == 0 else f": {(run.stdout + run.stderr)[-600:]}"))
+    injected = [os.path.join(d, f) for d, _, fs in os.walk(base) for f in fs if f == "INJECTED"]
+    injected += [p for p in (os.path.join(ROOT, "INJECTED"), os.path.join(ROOT, "plugin", "build", "INJECTED"))
+                 if os.path.exists(p)]
+    check(not injected, f"the command in the folder's name never ran (INJECTED files: {injected})")
+    record("odd_path", {"folder": ODD, "make_plugin_exit": build.returncode, "scene_exit": run.returncode,
+                        "injected": injected})
+    shutil.rmtree(base, ignore_errors=True)
+    finish()
+
+
+if __name__ == "__main__":
+    main()
