@@ -180,6 +180,36 @@ def main():
               in bad_scene.stderr and bad_scene_make.returncode != 0
               and "unknown scene 'sleeve-radail'" in bad_scene_make.stderr,
               f"(d) an unknown scene fails naming it: {first_error(bad_scene)}; make: {first_error(bad_scene_make)}")
+        # One resolver for every Python entry point: a path is not a scene name, and nothing runs.
+        escape = os.path.join(tmp, "escape.edp")
+        with open(escape, "w") as f:
+            f.write("cout << \"escaped\" << endl;\n")
+        rel = os.path.relpath(escape[:-len(".edp")], os.path.join(ROOT, "edp", "scenes"))
+        bad_path = sweep_tool(rel, "g", "1")
+        try:
+            sma.run(rel, os.path.join(tmp, "v"))
+            driver = "ran"
+        except sma.SceneError as e:
+            driver = str(e)
+        check(bad_path.returncode != 0 and "is not a scene name" in bad_path.stderr and "escaped" not in bad_path.stdout
+              and driver.startswith(f"{rel!r} is not a scene name"),
+              f"(d) a scene name with a path ({rel}) is refused by tools/sweep.py and sma_driver.run before any "
+              f"FreeFEM start: {first_error(bad_path)}; driver: {driver[:60]}")
+        # One option coercion: types from the scene's -help; True/False only for a switch.
+        refusals = {}
+        for name, value in (("g", None), ("g", [300, 400]), ("g", True), ("steps", 3.5), ("steps", 2**40),
+                            ("g", float("nan")), ("phasemodel", 1)):
+            try:
+                sma.command("sleeve-radial", os.path.join(tmp, "u"), **{name: value})
+                refusals[f"{name}={value!r}"] = "accepted"
+            except sma.SceneError as e:
+                refusals[f"{name}={value!r}"] = str(e)
+        accepted = sma.command("sleeve-radial", os.path.join(tmp, "u"), quiet=True, steps="30", g=500)
+        check(all(v.startswith(f"sleeve-radial: -{k.split('=')[0]} = ") for k, v in refusals.items())
+              and accepted[2:8] == ["-quiet", "1", "-steps", "30", "-g", "500.0"],
+              f"(d) option values checked against the scene's types: {len(refusals)} refused "
+              f"(None, a list, True for a real, 3.5 and 2^40 for an int, nan, an int for a string); "
+              f"quiet=True, steps='30', g=500 -> {' '.join(accepted[2:8])}")
         typo = make("SCENE=sleeve-radial", "PARAM=g", "VALUES=300", "ARGS=-stpes 30", f"OUT={os.path.join(tmp, 'z')}")
         check(typo.returncode != 0 and "no option -stpes (did you mean -steps" in typo.stderr,
               f"(d) a misspelt option among ARGS fails before any run: {first_error(typo)}")

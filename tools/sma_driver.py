@@ -14,7 +14,10 @@ through a shell, from the repository root (the scenes' mesh paths are relative t
 """
 import difflib
 import json
+import math
+import numbers
 import os
+import re
 import subprocess
 import sys
 
@@ -41,8 +44,17 @@ def scenes():
                   for f in os.listdir(os.path.join(ROOT, folder)) if f.endswith(".edp"))
 
 
+SCENE_NAME = re.compile(r"[A-Za-z0-9_-]+\Z")  # the Makefile's check-scene rule, the same words
+
+
 def script(scene):
-    """The path of a scene (edp/scenes) or variant (edp/variants), relative to the repository."""
+    """The path of a scene (edp/scenes) or variant (edp/variants), relative to the repository: the
+    one resolver of the Python entry points (run, options, sweep). A name is letters, digits, -
+    and _ only (no path: '../x' or 'a/b' never reaches a folder), and must be a scene's or a
+    variant's."""
+    if not isinstance(scene, str) or not SCENE_NAME.match(scene):
+        raise SceneError(f"{scene!r} is not a scene name (letters, digits, - and _ only); scenes: "
+                         + " ".join(scenes()))
     for folder in SCENE_FOLDERS:
         path = os.path.join(folder, scene + ".edp")
         if os.path.isfile(os.path.join(ROOT, path)):
@@ -83,13 +95,51 @@ def check_option(scene, name):
                          + "; its options: " + " ".join("-" + k for k in known))
 
 
-def word(value):
-    """An option value as FreeFEM's getARGV reads it: booleans as 0/1, numbers in full precision."""
-    if isinstance(value, bool):
+def is_switch(option):
+    """An int option that is an on/off switch: its meaning starts "1:" (`-quiet 1: no progress
+    line`), its default 0 or 1. Only these take True and False."""
+    return option["type"] == "int" and option["meaning"].startswith("1:") and option["default"] in ("0", "1")
+
+
+def word(scene, name, value):
+    """An option value as FreeFEM's getARGV reads it, checked against the option's type (from the
+    scene's -help): an int takes a Python int (or a numeric string of one), a real a finite int or
+    float (or such a string), a string a str; True/False only for a switch (is_switch); None, lists
+    and other objects are refused, naming the option. Reals in full precision (repr)."""
+    option = options(scene)[name]
+    kind = option["type"]
+
+    def refuse(why):
+        raise SceneError(f"{scene}: -{name} = {value!r}: {why} (-{name} is {kind}: {option['meaning']})")
+    if value is None or isinstance(value, (list, tuple, dict, set)):
+        refuse("not a single value")
+    if isinstance(value, (bool, np.bool_)):
+        if not is_switch(option):
+            refuse("a boolean for an option that is not an on/off switch")
+        return "1" if value else "0"
+    if kind == "string":
+        if not isinstance(value, str):
+            refuse("a string option takes a str")
+        if value == "" or any(c in value for c in "\n\r\0"):
+            refuse("empty, or with a line break or a NUL")
+        return value
+    if isinstance(value, str):
+        text = value.strip()
+        pattern = r"[+-]?\d+\Z" if kind == "int" else r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?\Z"
+        if not re.match(pattern, text):
+            refuse(f"not a whole {'integer' if kind == 'int' else 'number'}")
+        value = int(text) if kind == "int" else float(text)
+    if kind == "int":
+        if not isinstance(value, numbers.Integral):
+            refuse("an int option takes an integer")
+        if not -2**31 <= int(value) < 2**31:
+            refuse("outside FreeFEM's 32-bit int")
         return str(int(value))
-    if isinstance(value, float):
-        return repr(value)
-    return str(value)
+    if kind == "real":
+        if not isinstance(value, numbers.Real) or not math.isfinite(float(value)):
+            refuse("a real option takes a finite number")
+        return repr(float(value))
+    refuse(f"an option of unknown type {kind!r}")
 
 
 def command(scene, out, **values):
@@ -100,7 +150,7 @@ def command(scene, out, **values):
         if name == "out":
             raise SceneError(f"{scene}: give the output folder as run()'s `out`, not as an option")
         check_option(scene, name)
-        words += ["-" + name, word(value)]
+        words += ["-" + name, word(scene, name, value)]
     return words + ["-out", str(out)]
 
 
