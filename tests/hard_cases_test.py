@@ -323,6 +323,12 @@ def main():
     results = {"test": "hard_cases", "mesh": "meshes/sleeve-coarse.msh",
                "grazing": grazing(reference), "friction": friction(), "large_steps": large_steps(fine, E, nu),
                "random_threshold_20K": random_threshold(reference), "slivers": slivers(E, nu)}
+    # A run that ends before anything happens says so: no -1 K event printed as -274.15 C.
+    code, text = run_failing("sleeve-circular", "hard-nothing-happens", "-mesh", "meshes/sleeve-coarse.msh",
+                             "-steps", "20", "-tend", "1", "-quiet", "1", "-vtkevery", "0")
+    line = next((ln for ln in text.splitlines() if ln.startswith("sleeve-circular: 20 steps")), "")
+    check(code == 0 and "no contact, never all austenite for good" in line and "-274" not in text,
+          f"a run with no contact and no reversion says so: {line[:120]}")
     record("hard_cases", results)
     finish()
 
