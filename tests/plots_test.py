@@ -194,6 +194,24 @@ def main():
     check(code == 0 and not bad, f"plot_sleeve-radial.py exit {code}, wrote {len(radial_pngs) - len(bad)} of "
           f"{len(radial_pngs)} PNGs (missing or stale: {bad})" + ("" if code == 0 else "\n" + output))
 
+    # ---- Damaged results: one error line naming the file, exit 1, never a traceback ----
+    damaged = os.path.join(TEST_RESULTS, "plots-damaged")
+    for name, damage in (("summary.json", lambda text: text[:len(text) // 2]),
+                         ("history.csv", lambda text: text[:len(text) // 2].rsplit(",", 3)[0]),
+                         ("points.csv", lambda text: text.replace("\n2,", "\n2,abc,", 1))):
+        shutil.rmtree(damaged, ignore_errors=True)
+        shutil.copytree(out, damaged)
+        path = os.path.join(damaged, name)
+        with open(path) as f:
+            text = f.read()
+        with open(path, "w") as f:
+            f.write(damage(text))
+        code, output = plot("plot_sleeve.py", damaged)
+        errors = [ln for ln in output.splitlines() if ln.startswith("error:")]
+        check(code == 1 and len(errors) == 1 and path in errors[0] and "Traceback" not in output,
+              f"a damaged {name}: plot_sleeve.py exit {code}, {errors[0] if errors else output[-200:]}")
+    shutil.rmtree(damaged, ignore_errors=True)
+
     record("plots", {"test": "plots", "mesh": summary["parameters"]["mesh"], "steps": STEPS, "dt_s": dt,
                      "last_step_pressure_relative_difference": worst_p, "frames": frames,
                      "frame_temperature_worst_K": worst_T, "frame_gap_worst_m": worst_gap,

@@ -5,8 +5,8 @@ phase-<mesh>.png: phase zones, austenite grey, martensite 1 black, martensite 2 
 dc-convergence.png: relative displacement change per DC iteration, log scale, all meshes.
 Usage: tools/plot_beam.py [results/beam]
 """
+import results_io
 import csv
-import json
 import os
 import sys
 
@@ -53,7 +53,7 @@ def convergence(outdir, meshes):
         its = [int(r["iteration"]) for r in mine]
         change = [max(float(r["relative_change"]), 1e-17) for r in mine]
         ax.semilogy(its, change, "o-", label=f"{mesh['name']} ({mesh['nodes']} nodes)")
-    tol = json.load(open(os.path.join(outdir, "summary.json")))["parameters"]["dc_tol"]
+    tol = results_io.read_json(os.path.join(outdir, "summary.json"))["parameters"]["dc_tol"]
     ax.axhline(tol, color="0.5", ls="--", lw=0.8, label=f"stopping tolerance {tol:g}")
     ax.set_xlabel("DC iteration")
     ax.set_ylabel("relative change of u (Euclidean norm)")
@@ -64,11 +64,11 @@ def convergence(outdir, meshes):
 
 def main():
     outdir = sys.argv[1] if len(sys.argv) > 1 else "results/beam"
-    summary = json.load(open(os.path.join(outdir, "summary.json")))
+    summary = results_io.read_json(os.path.join(outdir, "summary.json"))
     for mesh in summary["meshes"]:
         phase_map(outdir, mesh)
     convergence(outdir, summary["meshes"])
 
 
 if __name__ == "__main__":
-    main()
+    results_io.guard(main)

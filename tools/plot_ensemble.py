@@ -7,7 +7,7 @@
                  final value; the 5/50/95 % quantiles of summary.json as lines
 Usage: tools/plot_ensemble.py results/sleeve-random-ensemble
 """
-import json
+import results_io
 import os
 import sys
 
@@ -41,7 +41,7 @@ def main():
         if not os.path.isfile(os.path.join(out, name)):
             sys.exit(f"error: {os.path.join(out, name)} missing: run the ensemble first (make ensemble)")
     seeds = read_csv(os.path.join(out, "seeds.csv"))
-    summary = json.load(open(os.path.join(out, "summary.json")))
+    summary = results_io.read_json(os.path.join(out, "summary.json"))
     n = len(seeds["seed"])
     bins = max(5, min(30, n // 2))
     p = summary["parameters"]
@@ -74,4 +74,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    results_io.guard(main)

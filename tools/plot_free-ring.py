@@ -4,8 +4,8 @@
 Usage: tools/plot_free-ring.py [results/free-ring] [other-run-dir label ...]
 Extra (directory, label) pairs overlay the mean temperature of other runs (e.g. -latent 0).
 """
+import results_io
 import csv
-import json
 import os
 import sys
 
@@ -35,7 +35,7 @@ def main():
     extra = sys.argv[2:]
     for d, label in zip(extra[::2], extra[1::2]):
         ax.plot(read(d)["t"], [celsius(T) for T in read(d)["T_mean"]], ":", label=label)
-    T0 = json.load(open(os.path.join(outdir, "summary.json")))["parameters"]["T0"]
+    T0 = results_io.read_json(os.path.join(outdir, "summary.json"))["parameters"]["T0"]
     ax.axhline(celsius(T0), color="0.6", lw=0.6, label=f"T0 = {celsius(T0):.2f} C")
     ax.set_ylabel("T (C)")
     ax.legend(fontsize=8)
@@ -50,4 +50,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    results_io.guard(main)

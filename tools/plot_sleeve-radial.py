@@ -12,8 +12,8 @@ results/sleeve-radial/:
                          (end of dilatation, during contact, end)
 Usage: tools/plot_sleeve-radial.py results/sleeve-radial [other/history.csv ...]
 """
+import results_io
 import glob
-import json
 import os
 import sys
 
@@ -100,7 +100,7 @@ def fields(outdir, summary):
 
 def main():
     outdir = sys.argv[1] if len(sys.argv) > 1 else "results/sleeve-radial"
-    summary = json.load(open(os.path.join(outdir, "summary.json")))
+    summary = results_io.read_json(os.path.join(outdir, "summary.json"))
     force_temperature(outdir, summary, sys.argv[2:])
     iterations(outdir, summary)
     fields(outdir, summary)
@@ -108,4 +108,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    results_io.guard(main)

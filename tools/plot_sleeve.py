@@ -17,9 +17,8 @@ The data files are in SI units (K, Pa, m, s); the pictures in degrees C, MPa, mm
 Prints each figure's curve labels (the legend) on stdout.
 Usage: tools/plot_sleeve.py results/<scene>
 """
-import csv
+import results_io
 import glob
-import json
 import math
 import os
 import sys
@@ -51,12 +50,8 @@ TOUCHING = 1e-9
 
 
 def read_csv(path, skip_comment=True):
-    with open(path, newline="") as f:
-        lines = [ln for ln in f if not (skip_comment and ln.startswith("#"))]
-    rows = list(csv.DictReader(lines))
-    if not rows:
-        sys.exit(f"error: {path} has no data rows")
-    return {k: [float(r[k]) for r in rows] for k in rows[0]}
+    """{column: [float]} (results_io.read_csv: a cut or damaged file named, not a traceback)."""
+    return results_io.read_csv(path, skip_comment)
 
 
 def fields_time(path):
@@ -497,7 +492,7 @@ def main():
     summary_path = os.path.join(outdir, "summary.json")
     if not os.path.isfile(summary_path):
         sys.exit(f"error: {summary_path} missing: the run did not finish (summary.json is written last)")
-    summary = json.load(open(summary_path))
+    summary = results_io.read_json(summary_path)
     force_temperature(outdir, summary)
     displacement(outdir, summary)
     iterations(outdir, summary)
@@ -506,4 +501,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    results_io.guard(main)

@@ -7,7 +7,7 @@
 Usage: tools/plot_variants.py [--only <variant>] [results/variants] [docs/variants]
   (--only: the one figure of that variant, e.g. into its results folder: make run SCENE=beam-p2)
 """
-import json
+import results_io
 import os
 import sys
 
@@ -32,7 +32,7 @@ def save(fig, path):
 
 
 def asymmetric(src, dst, mesh="medium"):
-    summary = json.load(open(os.path.join(src, "summary.json")))
+    summary = results_io.read_json(os.path.join(src, "summary.json"))
     runs = {(r["law"], r["mesh"]): r for r in summary["runs"]}
     fig, axes = plt.subplots(2, 1, figsize=(10, 3.6))
     for ax, law in zip(axes, ("symmetric-plugin", "asymmetric")):
@@ -52,7 +52,7 @@ def asymmetric(src, dst, mesh="medium"):
 
 
 def lobed(src, dst):
-    summary = json.load(open(os.path.join(src, "summary.json")))
+    summary = results_io.read_json(os.path.join(src, "summary.json"))
     fig, ax = plt.subplots(figsize=(7, 4))
     styles = {"circle-plugin": ("0.5", "circle (eps = 0)"), "lobed": ("tab:blue", "lobed, mu = 0"),
               "lobed-friction": ("tab:red", f"lobed, mu = {summary['parameters']['mu']}")}
@@ -72,7 +72,7 @@ def lobed(src, dst):
 
 
 def p2(src, dst):
-    summary = json.load(open(os.path.join(src, "summary.json")))
+    summary = results_io.read_json(os.path.join(src, "summary.json"))
     fig, ax = plt.subplots(figsize=(6, 4))
     for element, marker in (("P1", "s-"), ("P2", "o-")):
         runs = [r for r in summary["runs"] if r["element"] == element]
@@ -105,4 +105,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    results_io.guard(main)

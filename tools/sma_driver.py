@@ -13,7 +13,6 @@ through a shell, from the repository root (the scenes' mesh paths are relative t
 `out` is relative to the root too). Standard library and numpy only.
 """
 import difflib
-import json
 import math
 import numbers
 import os
@@ -27,6 +26,7 @@ TOOLS = os.path.dirname(os.path.abspath(__file__))
 if TOOLS not in sys.path:  # importable from anywhere (tests/, a notebook), not only from tools/
     sys.path.insert(0, TOOLS)
 import param_reference  # noqa: E402
+import results_io  # noqa: E402
 
 ROOT = os.path.dirname(TOOLS)
 FF = os.path.join(ROOT, "tools", "ff")
@@ -206,8 +206,10 @@ class Results:
         path = os.path.join(out, "summary.json")
         if not os.path.isfile(path):
             raise SceneError(f"no summary.json in {out}: no run finished there (a scene writes it last)")
-        with open(path) as f:
-            self.summary = json.load(f)
+        try:
+            self.summary = results_io.read_json(path)
+        except results_io.ResultsError as e:
+            raise SceneError(str(e)) from None
         self.history = read_csv(os.path.join(out, "history.csv"))
         self.points = read_csv(os.path.join(out, "points.csv"))
         self.contact = read_csv(os.path.join(out, "contact-final.csv"))
