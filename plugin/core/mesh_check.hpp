@@ -12,6 +12,9 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <algorithm>
+#include <array>
+#include <map>
 #include <unordered_map>
 
 namespace sma::mesh {
@@ -36,6 +39,13 @@ inline std::string check_msh(const std::string& path, double min_quality) {
   double cw_x = 0, cw_y = 0;
   double total = 0, worst_q = 0, worst_q_area = 0, min_area = 0, min_area_q = 0;
   long worst_q_id = 0, min_area_id = 0;
+  // Nodes: the count the section declares and the lines it holds, ids given twice, coordinates
+  // that are not finite numbers of a sane size. Triangles: one listed twice (the same three nodes,
+  // in any order) corrupts gmshload's mesh (issue 26: a heap corruption).
+  long nodes_declared = -1, node_lines = 0, node_twice = 0, node_bad = 0;
+  std::string node_bad_text;
+  std::map<std::array<long, 3>, long> seen_triangles;
+  long triangle_twice = 0, triangle_first = 0;
   double worst_x = 0, worst_y = 0, min_x = 0, min_y = 0;
   enum { none, format, nodes, elems } section = none;
   while (std::getline(in, line)) {
@@ -51,9 +61,24 @@ inline std::string check_msh(const std::string& path, double min_quality) {
       saw_format = true;
       section = none;
     } else if (section == nodes) {
+      if (nodes_declared < 0) {
+        if (!(words >> nodes_declared) || nodes_declared < 0) nodes_declared = -2;
+        continue;
+      }
+      ++node_lines;
       long id;
       double x, y;
-      if (words >> id >> x >> y) node[id] = {x, y};
+      if (words >> id >> x >> y) {
+        if (!(std::isfinite(x) && std::isfinite(y) && std::fabs(x) < 1e12 && std::fabs(y) < 1e12)) {
+          if (!node_bad) { node_bad = id; node_bad_text = line; }
+          continue;
+        }
+        if (node.count(id) && !node_twice) node_twice = id;
+        node[id] = {x, y};
+      } else if (!node_bad) {
+        node_bad = node_lines;
+        node_bad_text = line;
+      }
     } else if (section == elems) {
       if (declared < 0) { words >> declared; continue; }
       ++elements;
@@ -62,6 +87,10 @@ inline std::string check_msh(const std::string& path, double min_quality) {
       long tag, v[3];
       for (long k = 0; k < ntags; ++k) words >> tag;
       if (!(words >> v[0] >> v[1] >> v[2])) continue;
+      std::array<long, 3> key{v[0], v[1], v[2]};
+      std::sort(key.begin(), key.end());
+      const auto [where, fresh] = seen_triangles.emplace(key, id);
+      if (!fresh && !triangle_twice) { triangle_twice = id; triangle_first = where->second; }
       if (!node.count(v[0]) || !node.count(v[1]) || !node.count(v[2])) {
         if (!missing) missing = id;
         continue;
@@ -94,7 +123,17 @@ inline std::string check_msh(const std::string& path, double min_quality) {
     return name + " is cut off: " + std::to_string(elements) + " of the " + std::to_string(declared) +
            " elements it declares, " + (end_elements ? "then $EndElements" : "and no $EndElements") +
            " (an interrupted gmsh or copy? run 'make meshes')";
+  if (nodes_declared == -2) return name + ": its $Nodes section does not start with the number of nodes";
+  if (node_bad)
+    return name + ": a node line is not 'id x y z' with finite coordinates below 1e12 in size: '" + node_bad_text + "'";
+  if (nodes_declared >= 0 && node_lines != nodes_declared)
+    return name + " declares " + std::to_string(nodes_declared) + " nodes and lists " + std::to_string(node_lines) +
+           " (a cut or edited file? run 'make meshes')";
+  if (node_twice) return name + ": node " + std::to_string(node_twice) + " is defined twice";
   if (missing) return name + ": triangle " + std::to_string(missing) + " uses a node the file does not define";
+  if (triangle_twice)
+    return name + ": triangle " + std::to_string(triangle_twice) + " repeats triangle " + std::to_string(triangle_first) +
+           " (the same three nodes)";
   if (clockwise)
     return name + ": triangle " + std::to_string(clockwise) + detail::format(" (centroid %.6g, %.6g)", cw_x, cw_y) +
            " is clockwise: FreeFEM needs counter-clockwise triangles (regenerate the mesh with gmsh)";

@@ -52,6 +52,24 @@ TEST(MeshCheck, NamesEachFault) {
   EXPECT_NE(check("no header").find("not a gmsh MSH file"), std::string::npos);
 }
 
+// Faults that gmshload takes without a word and then corrupts memory or reads wrongly on.
+TEST(MeshCheck, NamesNodeAndRepeatFaults) {
+  const std::string twice = check(square("2.2 0 8", "1 2 2 1 1 1 2 3\n2 2 2 1 1 1 3 4\n3 2 2 1 1 3 1 2\n", "3"));
+  EXPECT_NE(twice.find("triangle 3 repeats triangle 1 (the same three nodes)"), std::string::npos) << twice;
+  std::string fewer = square();
+  fewer.replace(fewer.find("$Nodes\n4\n"), 9, "$Nodes\n5\n");
+  EXPECT_NE(check(fewer).find("declares 5 nodes and lists 4"), std::string::npos) << check(fewer);
+  std::string dup = square();
+  dup.replace(dup.find("\n4 0 "), 4, "\n3 0 ");
+  EXPECT_NE(check(dup).find("node 3 is defined twice"), std::string::npos) << check(dup);
+  std::string nan = square();
+  nan.replace(nan.find("\n2 1.000000 "), 12, "\n2 nan ");
+  EXPECT_NE(check(nan).find("a node line is not 'id x y z' with finite coordinates"), std::string::npos) << check(nan);
+  std::string huge = square();
+  huge.replace(huge.find("\n2 1.000000 "), 12, "\n2 1e300 ");
+  EXPECT_NE(check(huge).find("finite coordinates below 1e12"), std::string::npos) << check(huge);
+}
+
 TEST(MeshCheck, AreaFloorAndQualityAreGmshloadsAndTheOptions) {
   // A square of side 1e-4 has triangles of area 5e-9 < 1e-8: gmshload's floor, in the mesh's units.
   EXPECT_NE(check(square("2.2 0 8", "1 2 2 1 1 1 2 3\n2 2 2 1 1 1 3 4\n", "2", true, 1e-4)).find("area 5e-09 < 1e-8"),
