@@ -158,6 +158,30 @@ def killed(tmp, measured):
     measured["killed"] = {"stale_lock_left": stale, "next_exit": again.returncode}
 
 
+def causes(tmp, measured):
+    """tools/ff names why FreeFEM stopped: a SIGTERM of the FreeFEM process (interrupted), a
+    file-size limit (SIGXFSZ), an execution error of a script (exit 8): one error line each."""
+    out = os.path.join(tmp, "terminated")
+    victim = subprocess.Popen([FF, SCENE, "-quiet", "1", "-steps", "30000", "-out", out], cwd=ROOT,
+                              stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    wait_for(os.path.join(out, ".sma-lock"))
+    pid = subprocess.run(["pgrep", "-P", str(victim.pid), "FreeFem"], capture_output=True, text=True).stdout.split()
+    for p in pid:
+        os.kill(int(p), signal.SIGTERM)
+    _, err = victim.communicate(timeout=60)
+    lines = [ln for ln in err.splitlines() if ln.startswith("error:")]
+    check(victim.returncode == 143 and len(lines) == 1 and "SIGTERM" in lines[0] and "interrupted" in lines[0],
+          f"FreeFEM stopped by SIGTERM: exit {victim.returncode}, {lines[0] if lines else err[-200:]}")
+    script = os.path.join(tmp, "divide.edp")
+    with open(script, "w") as f:
+        f.write("int a = 1 / 0;\n")
+    divide = subprocess.run([FF, script], cwd=ROOT, capture_output=True, text=True)
+    lines = [ln for ln in (divide.stdout + divide.stderr).splitlines() if ln.startswith("error:")]
+    check(divide.returncode == 8 and len(lines) == 1 and "execution error (exit 8)" in lines[0],
+          f"an execution error of a script: exit {divide.returncode}, {lines[0] if lines else divide.stderr[-200:]}")
+    measured["causes"] = {"sigterm_exit": victim.returncode, "exec_error_exit": divide.returncode}
+
+
 def foreign(tmp, measured):
     out = os.path.join(tmp, "my papers")
     os.makedirs(os.path.join(out, "frames"))
@@ -206,6 +230,7 @@ def main():
         full_disk(tmp, measured)
         concurrent(tmp, measured)
         killed(tmp, measured)
+        causes(tmp, measured)
         foreign(tmp, measured)
         shell_syntax(tmp, measured)
     record("faults", {"test": "faults", **measured})
