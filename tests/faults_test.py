@@ -182,6 +182,42 @@ def causes(tmp, measured):
     measured["causes"] = {"sigterm_exit": victim.returncode, "exec_error_exit": divide.returncode}
 
 
+def freefem_running(marker):
+    """FreeFEM processes whose command line holds `marker`."""
+    return subprocess.run(["pgrep", "-f", "-a", "FreeFem.*" + marker], capture_output=True, text=True).stdout.split("\n")[:-1]
+
+
+def orphans(tmp, measured):
+    """A SIGTERM to `make run`, to a sweep and to tools/ff reaches the FreeFEM they started: none runs
+    on, orphaned (each was a 30000-step run, signalled once running)."""
+    found = {}
+    for name, argv in (
+            ("make run", ["make", "--no-print-directory", "run", "SCENE=sleeve-circular",
+                          f"ARGS=-steps 30000 -quiet 1 -out {tmp}/orphan-make"]),
+            ("sweep", ["/usr/bin/python3", "tools/sweep.py", "sleeve-circular", "g", "400", "500",
+                       "--out", f"{tmp}/orphan-sweep", "--", "-steps", "30000"]),
+            ("tools/ff", [FF, SCENE, "-quiet", "1", "-steps", "30000", "-out", f"{tmp}/orphan-ff"])):
+        marker = f"{tmp}/orphan-"
+        p = subprocess.Popen(argv, cwd=ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+        deadline = time.time() + 60
+        while not freefem_running(marker) and time.time() < deadline and p.poll() is None:
+            time.sleep(0.2)
+        started = bool(freefem_running(marker))
+        p.send_signal(signal.SIGTERM)
+        try:
+            p.wait(timeout=60)
+        except subprocess.TimeoutExpired:
+            p.kill()
+        time.sleep(1)
+        left = freefem_running(marker)
+        for line in left:
+            os.kill(int(line.split()[0]), signal.SIGKILL)
+        found[name] = {"started": started, "exit": p.returncode, "left": len(left)}
+        check(started and p.returncode != 0 and not left,
+              f"SIGTERM to {name}: exit {p.returncode}, FreeFEM processes left running: {len(left)} (started: {started})")
+    measured["orphans"] = found
+
+
 def foreign(tmp, measured):
     out = os.path.join(tmp, "my papers")
     os.makedirs(os.path.join(out, "frames"))
@@ -231,6 +267,7 @@ def main():
         concurrent(tmp, measured)
         killed(tmp, measured)
         causes(tmp, measured)
+        orphans(tmp, measured)
         foreign(tmp, measured)
         shell_syntax(tmp, measured)
     record("faults", {"test": "faults", **measured})

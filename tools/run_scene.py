@@ -15,8 +15,9 @@ nothing is drawn. Exit: the run's exit code, else the plot's.
 """
 import os
 import shlex
-import subprocess
 import sys
+
+import children
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -48,14 +49,14 @@ def main(argv):
     launcher = words_of("RUN_LAUNCHER") or [os.path.join(ROOT, "tools", "ff")]
     user = words_of("RUN_ARGS")
     words = words_of("RUN_FIXED") + user
-    run = subprocess.run(launcher + [script] + words)
+    run = children.run(launcher + [script] + words)
     if run.returncode != 0:
         return run.returncode
     if "-help" in user:
         return 0
     out = output_folder(words, default_out)
     if plot:
-        drawn = subprocess.run(plot + [out])
+        drawn = children.run(plot + [out])
         if drawn.returncode != 0:
             print(f"error: drawing the figures of {out} failed ({' '.join(plot)})", file=sys.stderr)
             return drawn.returncode
@@ -64,4 +65,5 @@ def main(argv):
 
 
 if __name__ == "__main__":
+    children.install()
     sys.exit(main(sys.argv[1:]))

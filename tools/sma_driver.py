@@ -25,6 +25,7 @@ import numpy as np
 TOOLS = os.path.dirname(os.path.abspath(__file__))
 if TOOLS not in sys.path:  # importable from anywhere (tests/, a notebook), not only from tools/
     sys.path.insert(0, TOOLS)
+import children  # noqa: E402
 import param_reference  # noqa: E402
 import results_io  # noqa: E402
 
@@ -161,7 +162,7 @@ def run(scene, out, quiet=True, **values):
     if quiet and "quiet" in options(scene) and "quiet" not in values:
         values["quiet"] = 1
     words = command(scene, out, **values)
-    result = subprocess.run(words, cwd=ROOT, capture_output=True, text=True)
+    result = children.run(words, cwd=ROOT, capture_output=True, text=True)
     if result.returncode != 0:
         log = (result.stdout + "\n" + result.stderr).strip().splitlines()
         errors = [ln for ln in log if ln.startswith("error:")]

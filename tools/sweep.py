@@ -37,6 +37,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import children  # noqa: E402
 import sma_driver as sma  # noqa: E402
 from units import KELVIN_AT_0C  # noqa: E402
 
@@ -369,4 +370,5 @@ def main(argv):
 
 
 if __name__ == "__main__":
+    children.install()
     sys.exit(main(sys.argv[1:]))

@@ -1,0 +1,65 @@
+"""Child processes that end with their parent (issue 26: a SIGTERM to `make run` or to a sweep left
+FreeFEM running). run() is subprocess.run for the suite's tools; once install() has run, a TERM,
+INT or HUP to this process is passed on to every child still running, their end awaited (10 s,
+then SIGKILL), no new child is started (a sweep's queued runs), and this process exits 128 + the
+signal's number, as the shell would. GNU make passes a TERM on to the recipe it runs, tools/ff to
+FreeFEM: a TERM to `make run` reaches every process of the run.
+"""
+import signal
+import subprocess
+import sys
+import threading
+
+_running = set()
+# Reentrant: the handler runs in the main thread, which may hold the lock when the signal comes.
+_lock = threading.RLock()
+_stopped_by = []  # the signal that stopped this process, once one has
+
+
+def _forward(signum, frame):
+    with _lock:
+        _stopped_by.append(signum)
+        procs = list(_running)
+    for p in procs:
+        try:
+            p.send_signal(signum)
+        except OSError:
+            pass
+    for p in procs:
+        try:
+            p.wait(timeout=10)
+        except subprocess.TimeoutExpired:
+            p.kill()
+    print(f"error: stopped by signal {signal.Signals(signum).name}: {len(procs)} running child process(es) "
+          "stopped with it", file=sys.stderr)
+    sys.stderr.flush()
+    raise SystemExit(128 + signum)
+
+
+def install():
+    """Forward TERM, INT and HUP to the running children (call once, from the main thread)."""
+    for s in (signal.SIGTERM, signal.SIGINT, signal.SIGHUP):
+        signal.signal(s, _forward)
+
+
+def run(args, **kwargs):
+    """subprocess.run(args, **kwargs) whose process is stopped with this one (see install). After
+    a forwarded signal it starts nothing: it returns exit 128 + that signal's number at once."""
+    capture = kwargs.pop("capture_output", False)
+    if capture:
+        kwargs.setdefault("stdout", subprocess.PIPE)
+        kwargs.setdefault("stderr", subprocess.PIPE)
+    if _stopped_by:
+        return subprocess.CompletedProcess(args, 128 + _stopped_by[0], "" if capture else None, "" if capture else None)
+    with subprocess.Popen(args, **kwargs) as p:
+        with _lock:
+            _running.add(p)
+            late = bool(_stopped_by)  # the signal came while this child was starting
+        if late:
+            p.terminate()
+        try:
+            out, err = p.communicate()
+        finally:
+            with _lock:
+                _running.discard(p)
+    return subprocess.CompletedProcess(args, p.returncode, out, err)
