@@ -26,6 +26,8 @@ PLUGIN := plugin/build/sma.so
 PLUGIN_SOURCES := plugin/sma.cpp $(wildcard plugin/core/*.hpp)
 # clock() without a system call, preloaded by tools/ff (plugin/fastclock.c says why).
 FASTCLOCK := plugin/build/fastclock.so
+# The results folder's claim for the Python tools (a sweep's folder): plugin/results_tool.cpp.
+RESULTS_TOOL := plugin/build/sma-results
 
 # gmsh meshes (MSH 2.2: FreeFEM's gmshload does not read MSH 4): meshes/<geo>-<level>.msh is
 # made from meshes/<geo>.geo with the gmsh options <geo>_opt_<level> (the .geo files say why).
@@ -88,7 +90,10 @@ FIGURE_SCENES := beam sleeve-circular sleeve-circular-single sleeve-circular-gva
 deps:
 	@tools/install-deps.sh
 
-plugin: deps $(PLUGIN) $(FASTCLOCK)
+plugin: deps $(PLUGIN) $(FASTCLOCK) $(RESULTS_TOOL)
+$(RESULTS_TOOL): plugin/results_tool.cpp plugin/core/files.hpp
+	@mkdir -p plugin/build
+	@g++ -std=c++17 -O2 -Wall -Werror plugin/results_tool.cpp -o $@
 $(FASTCLOCK): plugin/fastclock.c
 	@mkdir -p plugin/build
 	@cc -O2 -shared -fPIC -Wall -Werror plugin/fastclock.c -o $@

@@ -65,8 +65,14 @@
 //   string FileAbsolute(string path)               path made absolute (for messages)
 //   int FileEndsWith(string path, string tail)     1 if the file ends with tail (+ white space)
 //   string FileTruncate(string path, real length)  cuts the file to its first length bytes
-//   string ResultsClaim(string dir, string scene)  refuse a foreign folder, lock it for this run
-//                                                  (the lock goes when the process exits)
+//   string ResultsClaim(string dir, string scene)  refuse a folder holding anything its manifest
+//                                                  does not list, lock it for this run (the lock
+//                                                  goes when the process exits), remove the
+//                                                  listed entries, start a manifest
+//   string ResultsClaimResumed(string dir, string scene, string patterns)   the same for a
+//                                                  resumed run: removes only the listed entries
+//                                                  that match the patterns
+//   string ResultsRecord(string path)              lists path in the manifest of its results folder
 //   int ResultsRelease(string dir)                 removes this process's lock of dir now
 //   string StreamWriteError(ofstream f)            flushes f; "" if every write so far succeeded
 //   string JsonFileError(string path)              "" if the file is valid JSON, finite numbers
@@ -509,7 +515,7 @@ long RoundToFloat(KN<double>* const& x) {
   return changed;
 }
 
-double SmaPluginVersion() { return 8.0; }
+double SmaPluginVersion() { return 9.0; }
 
 // FreeFEM's time() has a resolution of one second and clock() counts CPU time; timings of the
 // scenes are wall-clock seconds from a monotonic clock.
@@ -550,13 +556,28 @@ std::vector<std::string>& ClaimedFolders() {
 void ReleaseClaimedFolders() {
   for (const auto& dir : ClaimedFolders()) sma::files::release_results(dir, (long)getpid());
 }
-string* ResultsClaim(Stack stack, string* const& dir, string* const& scene) {
-  std::string error = sma::files::claim_results(*dir, *scene, (long)getpid());
+// The entries this process has recorded in a manifest (files.hpp record_result).
+std::vector<std::string>& RecordedResults() {
+  static std::vector<std::string> known;
+  return known;
+}
+string* Claim(Stack stack, const std::string& dir, const std::string& scene, bool resume, const std::string& patterns) {
+  std::string error = sma::files::claim_results(dir, scene, (long)getpid(), resume, patterns);
+  RecordedResults().clear();  // a fresh claim started a new manifest
   if (error.empty()) {
     if (ClaimedFolders().empty()) std::atexit(ReleaseClaimedFolders);
-    ClaimedFolders().push_back(*dir);
+    ClaimedFolders().push_back(dir);
   }
   return NewString(stack, error);
+}
+string* ResultsClaim(Stack stack, string* const& dir, string* const& scene) {
+  return Claim(stack, *dir, *scene, false, "");
+}
+string* ResultsClaimResumed(Stack stack, string* const& dir, string* const& scene, string* const& patterns) {
+  return Claim(stack, *dir, *scene, true, *patterns);
+}
+string* ResultsRecord(Stack stack, string* const& path) {
+  return NewString(stack, sma::files::record_result(*path, RecordedResults()));
 }
 
 long ResultsRelease(string* const& dir) {
@@ -627,6 +648,8 @@ static void Load_Init() {
   Global.Add("FileEndsWith", "(", new OneOperator2_<long, S, S>(FileEndsWith));
   Global.Add("FileTruncate", "(", new OneOperator2s_<S, S, double>(FileTruncate));
   Global.Add("ResultsClaim", "(", new OneOperator2s_<S, S, S>(ResultsClaim));
+  Global.Add("ResultsClaimResumed", "(", new OneOperator3s_<S, S, S, S>(ResultsClaimResumed));
+  Global.Add("ResultsRecord", "(", new OneOperator1s_<S, S>(ResultsRecord));
   Global.Add("ResultsRelease", "(", new OneOperator1_<long, S>(ResultsRelease));
   Global.Add("StreamWriteError", "(", new OneOperator1s_<S, std::ostream*>(StreamWriteError));
   Global.Add("JsonFileError", "(", new OneOperator1s_<S, S>(JsonFileError));

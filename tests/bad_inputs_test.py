@@ -141,7 +141,8 @@ def main():
             shutil.rmtree(out, ignore_errors=True)
             os.makedirs(out)
             earlier = '{"scene": "an earlier run"}\n'
-            for name, text in ((".sma-results", "sleeve-circular\n"), ("summary.json", earlier)):
+            manifest = "sma-results manifest 1\nscene sleeve-circular\nsummary.json\n"
+            for name, text in ((".sma-results", manifest), ("summary.json", earlier)):
                 with open(os.path.join(out, name), "w") as f:
                     f.write(text)
             t0 = time.time()

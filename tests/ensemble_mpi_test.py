@@ -12,7 +12,7 @@ the coarse mesh, 150 steps, 4 seeds.
   relative), and the force columns are pressure x 2 pi Ri with Ri from the children's summaries.
 - The draw is seeded: each child recorded the seed, steps and mesh it was asked for, and the four
   seeds give four different T0 samples and four different node peak ratios.
-- A child's failure stops the ensemble loudly: seed 2 (rank 1) made to fail gives a non-zero exit,
+- A child's failure stops the ensemble loudly: seed 2 (rank 1) killed while it runs gives a non-zero exit,
   an error naming seed 2 and its log, no other seed blamed, and no seeds.csv or summary.json.
 Writes results/checks/ensemble_mpi.json.
 """
@@ -21,8 +21,10 @@ import json
 import math
 import os
 import shutil
+import signal
 import subprocess
 import sys
+import time
 
 import numpy as np
 
@@ -162,17 +164,33 @@ def main():
     check(plot.returncode == 0 and os.path.getsize(png) > 10000 if os.path.isfile(png) else False,
           f"tools/plot_ensemble.py draws histogram.png (exit {plot.returncode})")
 
-    # A failing child: seed 2's output directory is taken by a file, so its child cannot start.
+    # A failing child: seed 2's FreeFEM is killed while it runs (a crash), in a folder that holds
+    # an earlier ensemble's results (its manifest lists them: they go, nothing is refused). The
+    # children run 3000 steps (the last -steps wins), long enough to be caught running.
     out = os.path.join(TEST_RESULTS, "ensemble-failure")
     shutil.rmtree(out, ignore_errors=True)
     os.makedirs(out)
-    open(os.path.join(out, ".sma-results"), "w").close()  # an earlier ensemble's folder
-    open(os.path.join(out, "seed-2"), "w").close()
-    _, proc = ensemble("ensemble-failure", 2, fresh=False)
+    with open(os.path.join(out, ".sma-results"), "w") as f:
+        f.write("sma-results manifest 1\nscene sleeve-random-ensemble\nseeds.csv\n")
+    with open(os.path.join(out, "seeds.csv"), "w") as f:
+        f.write("an earlier ensemble's table\n")
+    victim = f"FreeFem.* -seed 2 .*{out}/seed-2"
+    driver = subprocess.Popen(["ff-mpirun", "-np", "2", DRIVER, "-v", "0", *COMMON, "-steps", "3000", "-out", out],
+                              cwd=ROOT, env=environment(), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    killed, deadline = False, time.time() + 120
+    while not killed and driver.poll() is None and time.time() < deadline:
+        found = subprocess.run(["pgrep", "-f", victim], capture_output=True, text=True).stdout.split()
+        for pid in found:
+            os.kill(int(pid), signal.SIGKILL)
+            killed = True
+        time.sleep(0.01)
+    stdout, stderr = driver.communicate(timeout=300)
+    proc = subprocess.CompletedProcess(driver.args, driver.returncode, stdout, stderr)
+    check(killed, "seed 2's FreeFEM was caught running and killed")
     blamed = [s for s in seeds if f"seed {s} (rank" in proc.stderr]
     print("\n".join(line for line in proc.stderr.splitlines() if "error" in line))
     check(proc.returncode != 0 and blamed == [2] and "seed 2 (rank 1) failed" in proc.stderr
-          and os.path.join(out, "seed-2", "run.log") in proc.stderr,
+          and os.path.join(out, "seed-2.log") in proc.stderr,
           f"a failing child (seed 2, rank 1): exit {proc.returncode}, seeds blamed {blamed}, its log named")
     report = os.path.join(out, "failed.txt")
     check(os.path.isfile(report) and "seed 2 (rank 1) failed" in open(report).read(),

@@ -12,7 +12,8 @@ plugin/core/files.hpp).
    the first's process; the first completes undisturbed, and its lock is gone after.
 3. A killed run (SIGKILL, no exit handler) leaves its lock; the next run takes it (the process is
    dead) and completes.
-4. A folder of the user's (a frames/ folder and notes) given as -out: refused, nothing in it touched.
+4. A folder of the user's (a frames/ folder and notes) given as -out: refused, nothing in it touched;
+   a second scene into a first scene's folder: the first's files all go (the manifest lists them).
 5. Names with shell syntax: -out and -mesh with a quote, double quotes, spaces, a semicolon,
    $(...), backquotes and UTF-8 run normally; summary.json is valid JSON and holds the mesh path
    exactly; no command in them ran.
@@ -236,6 +237,25 @@ def foreign(tmp, measured):
     measured["foreign"] = {"error": errors[0] if errors else None, "left": left}
 
 
+def second_scene(tmp, measured):
+    """A second scene into a first scene's folder: the first's files go as a whole (its frames,
+    fields and points.csv are no output of the radial model) and the manifest names the second."""
+    out = os.path.join(tmp, "two scenes")
+    first = run(out)
+    radial = subprocess.run([FF, os.path.join(ROOT, "edp", "scenes", "sleeve-radial.edp"), "-steps", "100",
+                             "-quiet", "1", "-out", out], cwd=ROOT, capture_output=True, text=True, timeout=300)
+    alone = os.path.join(tmp, "radial alone")
+    subprocess.run([FF, os.path.join(ROOT, "edp", "scenes", "sleeve-radial.edp"), "-steps", "100", "-quiet", "1",
+                    "-out", alone], cwd=ROOT, capture_output=True, text=True, timeout=300)
+    left, expected = sorted(os.listdir(out)), sorted(os.listdir(alone))
+    with open(os.path.join(out, ".sma-results")) as f:
+        scene_line = f.read().splitlines()[1]
+    check(first.returncode == 0 and radial.returncode == 0 and left == expected and scene_line == "scene sleeve-radial",
+          f"sleeve-radial into sleeve-circular's folder leaves only its own files ({len(left)} entries, alone "
+          f"{len(expected)}; extra: {sorted(set(left) - set(expected))}), its manifest's '{scene_line}'")
+    measured["second_scene"] = {"entries": left, "expected": expected}
+
+
 def shell_syntax(tmp, measured):
     name = "it's a \"dir\"; touch PWNED $(touch PWNED) `touch PWNED` r\u00e9sultats \u2713"
     folder = os.path.join(tmp, name)
@@ -269,6 +289,7 @@ def main():
         causes(tmp, measured)
         orphans(tmp, measured)
         foreign(tmp, measured)
+        second_scene(tmp, measured)
         shell_syntax(tmp, measured)
     record("faults", {"test": "faults", **measured})
     finish()

@@ -81,6 +81,8 @@ def killed_run():
     os.makedirs(out)
     with open(os.path.join(out, "summary.json"), "w") as f:
         f.write('{"scene": "an earlier run"}\n')
+    with open(os.path.join(out, ".sma-results"), "w") as f:  # its manifest lists it
+        f.write("sma-results manifest 1\nscene sleeve-circular\nsummary.json\n")
     proc = subprocess.Popen([os.path.join(ROOT, "tools", "ff"), "edp/scenes/sleeve-circular.edp", "-mesh",
                              "meshes/sleeve-coarse.msh", "-steps", "100000", "-tend", "10000", "-vtkevery", "20",
                              "-quiet", "1", "-out", out], cwd=ROOT, stdout=subprocess.DEVNULL,

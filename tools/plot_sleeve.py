@@ -65,6 +65,7 @@ def save(fig, path, dpi, tight=False):
     """Writes the PNG under a temporary name, then renames it: never a half-drawn file (every
     plot tool's figures go through here). tight: crop to the drawn area (bbox_inches="tight")."""
     partial = path[:-len(".png")] + ".partial.png"
+    results_io.record(path)  # listed in the results folder's manifest before it exists
     fig.savefig(partial, dpi=dpi, **({"bbox_inches": "tight"} if tight else {}))
     plt.close(fig)
     os.replace(partial, path)

@@ -1,5 +1,8 @@
 """Reading back what a scene wrote (summary.json, the CSVs), for the plot tools: a missing, cut or
 damaged file is named in one error line, never a Python traceback (issue 26: files are trusted).
+And the results folder's ownership for the Python tools that write into one: record() lists a
+file in the folder's manifest, claim() takes a folder by the scenes' own rules (plugin/core/
+files.hpp, through plugin/build/sma-results: one implementation).
 
     from results_io import ResultsError, guard, read_csv, read_json
     guard(main)   # runs main(); a ResultsError prints "error: ..." and exits 1
@@ -7,7 +10,58 @@ damaged file is named in one error line, never a Python traceback (issue 26: fil
 import csv
 import json
 import math
+import os
+import subprocess
 import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+MANIFEST = ".sma-results"
+MANIFEST_HEADER = "sma-results manifest 1"
+RESULTS_TOOL = os.path.join(ROOT, "plugin", "build", "sma-results")
+
+
+def record(path):
+    """Lists `path` (a file a tool is about to write) in the manifest of the nearest results folder
+    above it, as the scenes do (plugin/core/files.hpp record_result): a later run of the folder
+    then replaces it, and refuses nothing of ours. Outside a results folder nothing is recorded
+    (docs/variants' figures). A manifest of an older version (no header) is left alone."""
+    full = os.path.abspath(path)
+    rest = os.path.basename(full)
+    folder = os.path.dirname(full)
+    while True:
+        manifest = os.path.join(folder, MANIFEST)
+        if os.path.isfile(manifest):
+            with open(manifest) as f:
+                lines = f.read().splitlines()
+            if lines[:1] == [MANIFEST_HEADER] and rest not in lines[2:]:
+                # One write in append mode: lines added by several processes at once do not mix.
+                with open(manifest, "a") as f:
+                    f.write(rest + "\n")
+            return
+        parent = os.path.dirname(folder)
+        if parent == folder:
+            return
+        rest = os.path.join(os.path.basename(folder), rest)
+        folder = parent
+
+
+def claim(folder, scene):
+    """Takes `folder` for this process's writing, as a scene takes its -out: refused (ResultsError,
+    nothing touched) when it holds anything its manifest does not list or another run holds it;
+    else what an earlier run listed there is removed and a manifest of `scene` started. The lock
+    goes with release(folder) or this process's end (a later run finds it stale)."""
+    if not os.access(RESULTS_TOOL, os.X_OK):
+        raise ResultsError(f"{RESULTS_TOOL} is not built: run 'make plugin'")
+    done = subprocess.run([RESULTS_TOOL, "claim", folder, scene, str(os.getpid())], capture_output=True, text=True)
+    if done.returncode != 0:
+        message = done.stderr.strip().splitlines()
+        raise ResultsError(message[-1][len("error: "):] if message and message[-1].startswith("error: ")
+                           else f"sma-results claim {folder} failed (exit {done.returncode})")
+
+
+def release(folder):
+    """Removes this process's lock of `folder` (taken by claim)."""
+    subprocess.run([RESULTS_TOOL, "release", folder, str(os.getpid())], capture_output=True)
 
 
 class ResultsError(Exception):

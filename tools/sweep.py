@@ -38,6 +38,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import children  # noqa: E402
+import results_io  # noqa: E402
 import sma_driver as sma  # noqa: E402
 from units import KELVIN_AT_0C  # noqa: E402
 
@@ -211,6 +212,7 @@ def write_table(path, param, values, runs):
             names += [n for n in f if n not in names]
         header = [param] + names
         rows = [[v] + [f.get(n, "") for n in names] for v, f in zip(values, flat)]
+    results_io.record(path)
     with open(path + ".partial", "w", newline="") as f:
         w = csv.writer(f, lineterminator="\n")
         w.writerow(header)
@@ -294,12 +296,24 @@ def draw(out, scene, param, values, runs, plt):
 
 
 def write_json(path, record):
+    results_io.record(path)
     with open(path + ".partial", "w") as f:
         json.dump(record, f, indent=2, allow_nan=False)
     os.replace(path + ".partial", path)
 
 
 def main(argv):
+    try:
+        return sweep(argv)
+    finally:
+        if _claimed:
+            results_io.release(_claimed[0])
+
+
+_claimed = []  # the sweep's folder, once taken
+
+
+def sweep(argv):
     try:
         args = parse(argv)
         scene, param, values = args["scene"], args["param"], args["values"]
@@ -311,7 +325,14 @@ def main(argv):
         print(f"error: {e}", file=sys.stderr)
         return 2
     out = args["out"] or os.path.join(sma.ROOT, "results", "sweeps", f"{scene}-{param}")
-    os.makedirs(out, exist_ok=True)
+    # Taken as a scene takes its -out: a folder holding anything its manifest does not list is
+    # refused untouched; an earlier sweep's runs, table and figures go first.
+    try:
+        results_io.claim(out, "sweep " + scene)
+        _claimed.append(out)
+    except results_io.ResultsError as e:
+        print(f"error: {e}", file=sys.stderr)
+        return 2
     jobs = max(1, min(args["jobs"], os.cpu_count() or 1, len(values)))
     folders = [os.path.join(out, f"{param}={v}") for v in values]
     print(f"sweep: {scene} -{param} over {' '.join(values)} ({jobs} at a time) into {out}/", flush=True)
@@ -345,9 +366,6 @@ def main(argv):
         import matplotlib.pyplot as plt
         written, groups = draw(out, scene, param, done_values, results, plt)
     else:
-        for stale in ("force-temperature.png", "force-time.png"):  # an earlier sweep's, into the same DIR
-            if os.path.exists(os.path.join(out, stale)):
-                os.remove(os.path.join(out, stale))
         if results:
             note = f"{scene} writes no history.csv with a contact pressure (pressure_mean): the table only"
             print(f"sweep: {note}")

@@ -23,9 +23,16 @@ namespace sma::files {
 
 namespace fs = std::filesystem;
 
-// The marker a run leaves in its results folder: a later run may clear the folder's earlier
-// results only when it finds the marker there (or a summary.json of a run older than markers).
+// The manifest a run leaves in its results folder: the marker that the folder is this suite's
+// and the list of every entry the suite wrote there. A later run replaces or removes only listed
+// entries, and refuses a folder that holds anything unlisted, touching nothing (issue 26: names
+// alone decided ownership, and a user's file named like an output was deleted). Its text:
+//   sma-results manifest 1
+//   scene <the scene that wrote the folder>
+//   <a path relative to the folder>        one line per entry written (a file, frames/x.vtu)
+//   <a folder name>/                       a results folder of its own inside (a sweep's run)
 inline const char* results_marker = ".sma-results";
+inline const char* manifest_header = "sma-results manifest 1";
 inline const char* results_lock = ".sma-lock";
 
 inline std::string reason(const std::error_code& ec) { return ec.message(); }
@@ -119,41 +126,263 @@ inline long lock_owner(const fs::path& lock) {
   return in ? pid : 0;
 }
 
+struct Manifest {
+  bool present = false;  // a marker exists
+  bool legacy = false;   // a marker of a version before manifests (a scene name only)
+  std::string scene;
+  std::vector<std::string> entries;  // in the order written; repeats allowed
+};
+
+// Reads the manifest of the results folder `dir` into `m`; "" or the reason it cannot be read.
+inline std::string read_manifest(const fs::path& dir, Manifest& m) {
+  m = Manifest{};
+  const fs::path file = dir / results_marker;
+  std::error_code ec;
+  if (!fs::exists(fs::symlink_status(file, ec))) return {};
+  m.present = true;
+  if (!fs::is_regular_file(fs::symlink_status(file, ec)))
+    return file.string() + " is not a file (a results folder's manifest is a text file)";
+  std::ifstream in(file);
+  std::string line;
+  if (!std::getline(in, line)) {  // empty: an older marker, which lists nothing
+    m.legacy = true;
+    return {};
+  }
+  if (line != manifest_header) {
+    m.legacy = true;
+    m.scene = line;
+    return {};
+  }
+  if (!std::getline(in, line) || line.compare(0, 6, "scene ") != 0)
+    return file.string() + " is damaged: its second line is not 'scene <name>'";
+  m.scene = line.substr(6);
+  for (int number = 3; std::getline(in, line); ++number) {
+    const fs::path entry(line);
+    bool bad = line.empty() || entry.is_absolute();
+    for (const auto& part : entry) bad = bad || part == ".." || part == ".";
+    if (bad) return file.string() + " is damaged: line " + std::to_string(number) + " ('" + line +
+                    "') is not a path inside the folder";
+    m.entries.push_back(line);
+  }
+  return {};
+}
+
+// Whether `name` is the manifest, the lock, or one of their temporary names (the suite's own files).
+inline bool bookkeeping(const std::string& name) {
+  return name.compare(0, std::strlen(results_marker), results_marker) == 0 ||
+         name.compare(0, std::strlen(results_lock), results_lock) == 0;
+}
+
+// Whether the file `rel` is listed, or is a listed file's unfinished copy (x.csv.partial,
+// x.partial.vtu, x.partial.png: a run stopped while writing it).
+inline bool covered(const std::vector<std::string>& listed, const std::string& rel) {
+  auto has = [&](const std::string& name) { return std::find(listed.begin(), listed.end(), name) != listed.end(); };
+  if (has(rel)) return true;
+  const std::string partial = ".partial";
+  if (rel.size() > partial.size() && rel.compare(rel.size() - partial.size(), partial.size(), partial) == 0)
+    return has(rel.substr(0, rel.size() - partial.size()));
+  const auto at = rel.rfind(partial + ".");
+  if (at != std::string::npos && rel.find('/', at) == std::string::npos)
+    return has(rel.substr(0, at) + rel.substr(at + partial.size()));
+  return false;
+}
+
+// What a run of a version before manifests may have left in its folder (the union of the name
+// patterns those versions cleared; a match that is a folder counts whole): a folder with such a
+// version's marker is taken once if it holds nothing else, then gets a manifest.
+inline const char* legacy_outputs =
+    "summary.json history.csv points.csv contact-final.csv fields.pvd frames fields-* checkpoint.txt "
+    "dc-convergence.csv ring-final.vtu beam-*.vtu pressure-*.csv phase-*.csv pointwise-check.csv *.csv *.png "
+    "*.partial *.partial.vtu *.partial.png seeds.csv failed.txt seed-* run.log kernels.json";
+
+inline bool legacy_output(const std::string& name) {
+  std::istringstream patterns(legacy_outputs);
+  for (std::string p; patterns >> p;)
+    if (fnmatch(p.c_str(), name.c_str(), FNM_PERIOD) == 0) return true;
+  return false;
+}
+
+inline std::string unlisted_in(const fs::path& root, const Manifest& m, const std::string& prefix, int depth);
+
+// "" when every entry of the results folder `dir` is its manifest's (nested results folders
+// checked by their own), else the reason naming the first entry that is not.
+inline std::string foreign_entry(const fs::path& dir, int depth = 0) {
+  if (depth > 16) return "results folders nested too deep at " + dir.string();
+  Manifest m;
+  if (auto e = read_manifest(dir, m); !e.empty()) return e;
+  return unlisted_in(dir, m, "", depth);
+}
+
+inline std::string unlisted_in(const fs::path& root, const Manifest& m, const std::string& prefix, int depth) {
+  std::error_code ec;
+  const fs::path here = prefix.empty() ? root : root / prefix;
+  auto why = [&](const std::string& rel) {
+    if (!m.present)
+      return "the output folder " + root.string() + " holds files this suite did not write (" + rel +
+             "; it has no manifest " + results_marker + "): choose a new or empty folder with -out";
+    if (m.legacy)
+      return "the output folder " + root.string() + " was written by a version of this suite before " +
+             "manifests and holds " + rel + ", which no run of it wrote: move it away or choose another -out; " +
+             "nothing was touched";
+    return "the output folder " + root.string() + " holds " + rel + ", which this suite did not write " +
+           "there (it is not in the folder's manifest " + results_marker + "): move it away or choose " +
+           "another -out; nothing was touched";
+  };
+  for (fs::directory_iterator it(here, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (prefix.empty() && bookkeeping(name)) continue;
+    const std::string rel = prefix + name;
+    const auto type = it->symlink_status(ec).type();
+    if (m.legacy) {
+      if (!legacy_output(name)) return why(rel);
+      continue;
+    }
+    if (type == fs::file_type::directory) {
+      // A listed folder (`name/`), or one that listed files lie in (frames/x.vtu): a results
+      // folder of its own inside is checked against its own manifest, any other by the listing.
+      const bool listed = std::any_of(m.entries.begin(), m.entries.end(), [&](const std::string& e) {
+        return e.compare(0, rel.size() + 1, rel + "/") == 0;
+      });
+      if (!listed) return why(rel + "/");
+      if (fs::exists(it->path() / results_marker, ec)) {
+        if (auto e = foreign_entry(it->path(), depth + 1); !e.empty()) return e;
+      } else if (auto e = unlisted_in(root, m, rel + "/", depth); !e.empty()) {
+        return e;
+      }
+      continue;
+    }
+    if (!covered(m.entries, rel)) return why(rel);
+  }
+  if (ec) return "cannot list " + here.string() + ": " + reason(ec);
+  return {};
+}
+
+// Writes a fresh manifest (header and scene) for `scene` in `dir`, under a temporary name.
+inline std::string write_manifest(const fs::path& dir, const std::string& scene) {
+  const fs::path file = dir / results_marker, partial = dir / (std::string(results_marker) + ".partial");
+  {
+    std::ofstream out(partial, std::ios::trunc);
+    out << manifest_header << "\n" << "scene " << scene << "\n";
+    out.flush();
+    if (!out) return "cannot write " + file.string() + " (disk full?)";
+  }
+  std::error_code ec;
+  fs::rename(partial, file, ec);
+  if (ec) return "cannot write " + file.string() + ": " + reason(ec);
+  return {};
+}
+
+// Adds the line `entry` to the manifest of `dir` (one write with O_APPEND: lines appended by
+// several processes at once do not mix).
+inline std::string append_manifest(const fs::path& dir, const std::string& entry) {
+  const fs::path file = dir / results_marker;
+  const int fd = open(file.c_str(), O_WRONLY | O_APPEND);
+  if (fd < 0) return "cannot add " + entry + " to " + file.string() + ": " + std::strerror(errno);
+  const std::string line = entry + "\n";
+  const bool written = write(fd, line.data(), line.size()) == (ssize_t)line.size();
+  close(fd);
+  if (!written) return "cannot add " + entry + " to " + file.string() + " (disk full?)";
+  return {};
+}
+
+// The nearest folder holding a manifest among those of `path` (its own folder, then each parent),
+// and the path relative to it; false when none does.
+inline bool manifest_of(const std::string& path, fs::path& dir, std::string& rel) {
+  std::error_code ec;
+  fs::path full = fs::absolute(fs::path(path), ec).lexically_normal();
+  if (ec) return false;
+  fs::path rest = full.filename();
+  for (fs::path d = full.parent_path(); !d.empty(); d = d.parent_path()) {
+    if (fs::exists(d / results_marker, ec)) {
+      dir = d;
+      rel = rest.string();
+      return true;
+    }
+    if (d == d.parent_path()) break;
+    rest = d.filename() / rest;
+  }
+  return false;
+}
+
+// Records that the suite writes `path`: its name goes into the manifest of the nearest results
+// folder above it (nothing when there is none: a verification record, a documentation figure).
+// `known` caches the entries of manifests this process read or wrote (the per-step calls read
+// no file); another process's additions may be written a second time, which a reader ignores.
+inline std::string record_result(const std::string& path, std::vector<std::string>& known) {
+  std::string file = path;
+  bool folder = false;  // a path ending in '/' is a folder, listed as `name/`
+  while (file.size() > 1 && file.back() == '/') {
+    file.pop_back();
+    folder = true;
+  }
+  fs::path dir;
+  std::string rel;
+  if (!manifest_of(file, dir, rel)) return {};
+  if (folder) rel += "/";
+  const std::string key = (dir / rel).string();
+  if (std::find(known.begin(), known.end(), key) != known.end()) return {};
+  Manifest m;
+  if (auto e = read_manifest(dir, m); !e.empty()) return e;
+  if (m.legacy) return {};  // an older marker: the next claim refuses the folder anyway
+  if (std::find(m.entries.begin(), m.entries.end(), rel) == m.entries.end())
+    if (auto e = append_manifest(dir, rel); !e.empty()) return e;
+  known.push_back(key);
+  return {};
+}
+
+// "" unless `path` is, or holds, a results folder that a live run other than `pid` is writing
+// (a sweep's run still going): then the reason, naming it.
+inline std::string busy_inside(const fs::path& path, long pid, int depth = 0) {
+  std::error_code ec;
+  if (depth > 16 || !fs::is_directory(fs::symlink_status(path, ec))) return {};
+  const long owner = lock_owner(path / results_lock);
+  if (owner != 0 && owner != pid && process_alive(owner))
+    return "the results folder " + path.string() + " is in use by another run (process " + std::to_string(owner) +
+           "): wait for it or choose another -out";
+  for (fs::directory_iterator it(path, ec), end; !ec && it != end; it.increment(ec))
+    if (auto e = busy_inside(it->path(), pid, depth + 1); !e.empty()) return e;
+  return {};
+}
+
 // Claims the results folder `dir` for a run of `scene` by the process `pid`:
-//  - a folder that holds entries but neither this suite's marker nor a summary.json is someone
-//    else's: refused, nothing in it is touched;
+//  - a folder that holds anything its manifest does not list (or any entry and no manifest) is
+//    someone else's: refused, nothing in it touched;
 //  - a live run's lock in it: refused (two runs would mix their files);
-//  - else the lock is taken (a dead process's lock is replaced) and the marker written.
+//  - else the lock is taken (a dead process's lock is replaced). A fresh run (resume false) then
+//    removes every entry the manifest lists, whichever scene wrote them, and starts a manifest of
+//    its own; a resumed run must find its own scene's manifest and removes only the listed
+//    entries matching the shell patterns of `patterns` (what its remaining steps rewrite);
+//  - a folder inside another results folder is listed in that one's manifest as `name/`.
 // The caller removes the lock with release_results when the run ends, however it ends.
-inline std::string claim_results(const std::string& dir, const std::string& scene, long pid) {
+inline std::string claim_results(const std::string& dir, const std::string& scene, long pid, bool resume = false,
+                                 const std::string& patterns = "") {
   if (auto e = make_directory(dir); !e.empty()) return e;
   const fs::path d(dir);
   std::error_code ec;
-  bool ours = fs::exists(d / results_marker, ec) || fs::exists(d / "summary.json", ec);
-  if (!ours) {
-    for (fs::directory_iterator it(d, ec), end; !ec && it != end; it.increment(ec))
-      if (it->path().filename() != results_lock)
-        return "the output folder " + dir + " holds files this suite did not write (" +
-               it->path().filename().string() + "): choose a new or empty folder with -out";
-    if (ec) return "cannot list the output folder " + dir + ": " + reason(ec);
-  }
+  if (auto e = foreign_entry(d); !e.empty()) return e;
+  Manifest m;
+  if (auto e = read_manifest(d, m); !e.empty()) return e;
+  if (resume && (!m.present || m.legacy || m.scene != scene))
+    return "cannot resume " + scene + " in " + dir + ": the folder holds " +
+           (m.present && !m.legacy ? "a run of " + m.scene : std::string("no run of this version of the suite"));
   const fs::path lock = d / results_lock;
-  for (int attempt = 0; attempt < 2; ++attempt) {
+  bool taken = false;
+  for (int attempt = 0; attempt < 2 && !taken; ++attempt) {
     const int fd = open(lock.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644);
     if (fd >= 0) {
       const std::string text = std::to_string(pid) + "\n";
       const bool written = write(fd, text.data(), text.size()) == (ssize_t)text.size();
       close(fd);
       if (!written) return "cannot write the lock " + lock.string() + " (disk full?)";
-      std::ofstream marker(d / results_marker);
-      marker << scene << "\n";
-      marker.flush();
-      if (!marker) return "cannot write " + (d / results_marker).string() + " (disk full?)";
-      return {};
+      taken = true;
+      break;
     }
     if (errno != EEXIST) return "cannot create the lock " + lock.string() + ": " + std::strerror(errno);
     const long owner = lock_owner(lock);
-    if (owner == pid) return {};
+    if (owner == pid) {
+      taken = true;
+      break;
+    }
     if (process_alive(owner))
       return "the output folder " + dir + " is in use by another run (process " + std::to_string(owner) +
              ", lock " + lock.string() + "): wait for it or choose another -out";
@@ -163,7 +392,48 @@ inline std::string claim_results(const std::string& dir, const std::string& scen
     fs::rename(lock, aside, ec);
     fs::remove(aside, ec);
   }
-  return "cannot take the lock " + lock.string() + " (another run keeps taking it)";
+  if (!taken) return "cannot take the lock " + lock.string() + " (another run keeps taking it)";
+  // Under the lock: the folder as it is now (a run that held it may have added entries).
+  if (auto e = foreign_entry(d); !e.empty()) return e;
+  if (auto e = read_manifest(d, m); !e.empty()) return e;
+  const auto wanted = words(patterns);
+  for (const auto& p : wanted)
+    if (p.find('/') != std::string::npos || p == "." || p == "..")
+      return "refusing to remove '" + p + "' in " + dir + ": a removal pattern names entries of the folder only";
+  // The existing entries that are the manifest's (listed, or a listed file's unfinished copy).
+  std::vector<fs::path> doomed;
+  for (fs::directory_iterator it(d, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (bookkeeping(name)) continue;
+    if (resume) {
+      const bool match = std::any_of(wanted.begin(), wanted.end(), [&](const std::string& p) {
+        return fnmatch(p.c_str(), name.c_str(), FNM_PERIOD) == 0;
+      });
+      if (!match) continue;
+    }
+    doomed.push_back(it->path());  // foreign_entry found every entry to be the manifest's
+  }
+  if (ec) return "cannot list " + dir + ": " + reason(ec);
+  for (const auto& path : doomed)
+    if (auto e = busy_inside(path, pid); !e.empty()) return e;
+  for (const auto& path : doomed)
+    if (auto e = busy_inside(path, pid); !e.empty()) return e;
+  for (const auto& path : doomed) {
+    fs::remove_all(path, ec);
+    if (ec) return "cannot remove " + path.string() + ": " + reason(ec);
+  }
+  if (!resume) {
+    if (auto e = write_manifest(d, scene); !e.empty()) return e;
+    // Listed in the manifest of a results folder around this one (a sweep's run, an ensemble's seed).
+    const fs::path full = fs::absolute(d, ec).lexically_normal();
+    fs::path parent = full.filename().empty() ? full.parent_path().parent_path() : full.parent_path();
+    const std::string name = (full.filename().empty() ? full.parent_path() : full).filename().string();
+    Manifest outer;
+    if (!ec && read_manifest(parent, outer).empty() && outer.present && !outer.legacy &&
+        std::find(outer.entries.begin(), outer.entries.end(), name + "/") == outer.entries.end())
+      if (auto e = append_manifest(parent, name + "/"); !e.empty()) return e;
+  }
+  return {};
 }
 
 // Removes the lock of `dir` if `pid` holds it.

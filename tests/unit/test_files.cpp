@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <vector>
 
 #include "core/files.hpp"
 
@@ -82,12 +83,120 @@ TEST(Files, ClaimRefusesAFolderThisSuiteDidNotWrite) {
   EXPECT_NE(error.find("did not write"), std::string::npos) << error;
   EXPECT_TRUE(fs::exists(d + "/frames/my-own.vtu"));
   EXPECT_FALSE(fs::exists(d + "/" + files::results_lock));
-  // New, empty, or marked by an earlier run: taken.
+  // Output names without a manifest are not ours either (a summary.json made the folder ours).
+  fs::create_directories(t / "named");
+  touch(t / "named/summary.json", "mine");
+  EXPECT_NE(files::claim_results(t / "named", "beam", getpid()), "");
+  EXPECT_TRUE(fs::exists(t / "named/summary.json"));
+  // New, empty, or listed by an earlier run: taken.
   EXPECT_EQ(files::claim_results(t / "new", "beam", getpid()), "");
   EXPECT_TRUE(fs::exists(t / "new/.sma-results"));
   files::release_results(t / "new", getpid());
   EXPECT_FALSE(fs::exists(t / "new/.sma-lock"));
   EXPECT_EQ(files::claim_results(t / "new", "beam", getpid()), "");
+}
+
+// The manifest decides: a listed file (or its unfinished copy) is replaced, an unlisted one makes
+// the whole folder refused untouched, another scene's listed files go as a whole.
+TEST(Files, OnlyTheManifestsEntriesAreReplaced) {
+  Scratch t;
+  const std::string d = t / "out";
+  std::vector<std::string> known;
+  ASSERT_EQ(files::claim_results(d, "sleeve-circular", getpid()), "");
+  fs::create_directories(d + "/frames");
+  for (const std::string name : {"summary.json", "fields-1.csv", "frames/step-1.vtu", "frames/"})
+    ASSERT_EQ(files::record_result(d + "/" + name, known), "");
+  touch(d + "/summary.json");
+  touch(d + "/fields-1.csv");
+  touch(d + "/frames/step-1.vtu");
+  touch(d + "/fields-1.csv.partial");       // a listed file's unfinished copies
+  touch(d + "/frames/step-1.partial.vtu");
+  files::release_results(d, getpid());
+  // A user's file named like an output: refused, nothing touched.
+  touch(d + "/fields-2.csv", "mine");
+  std::string error = files::claim_results(d, "sleeve-circular", getpid());
+  EXPECT_NE(error.find("fields-2.csv"), std::string::npos) << error;
+  EXPECT_TRUE(fs::exists(d + "/summary.json"));
+  EXPECT_FALSE(fs::exists(d + "/.sma-lock"));
+  fs::remove(d + "/fields-2.csv");
+  // A user's file in a listed folder: refused too.
+  touch(d + "/frames/notes.txt", "mine");
+  error = files::claim_results(d, "sleeve-circular", getpid());
+  EXPECT_NE(error.find("frames/notes.txt"), std::string::npos) << error;
+  fs::remove(d + "/frames/notes.txt");
+  // A resumed run of another scene: refused.
+  EXPECT_NE(files::claim_results(d, "sleeve-radial", getpid(), true, "summary.json"), "");
+  files::release_results(d, getpid());
+  // Resumed, its own scene: only the listed entries matching the patterns go.
+  ASSERT_EQ(files::claim_results(d, "sleeve-circular", getpid(), true, "summary.json *.partial"), "");
+  EXPECT_FALSE(fs::exists(d + "/summary.json"));
+  EXPECT_FALSE(fs::exists(d + "/fields-1.csv.partial"));
+  EXPECT_TRUE(fs::exists(d + "/fields-1.csv"));
+  files::release_results(d, getpid());
+  // Another scene, fresh: every listed entry goes, the manifest starts again.
+  ASSERT_EQ(files::claim_results(d, "sleeve-radial", getpid()), "");
+  EXPECT_FALSE(fs::exists(d + "/fields-1.csv"));
+  EXPECT_FALSE(fs::exists(d + "/frames"));
+  files::Manifest m;
+  ASSERT_EQ(files::read_manifest(d, m), "");
+  EXPECT_EQ(m.scene, "sleeve-radial");
+  EXPECT_TRUE(m.entries.empty());
+  files::release_results(d, getpid());
+}
+
+// A folder of a version before manifests (its marker a scene name): taken once when it holds only
+// what such versions wrote, refused untouched when it holds anything else.
+TEST(Files, AFolderOfAnOlderVersionIsTakenOnlyWithItsOwnOutputs) {
+  Scratch t;
+  const std::string d = t / "old";
+  fs::create_directories(d + "/frames");
+  touch(d + "/.sma-results", "sleeve-circular\n");
+  touch(d + "/summary.json");
+  touch(d + "/frames/step-000050.vtu");
+  touch(d + "/notes.txt", "mine");
+  EXPECT_NE(files::claim_results(d, "sleeve-circular", getpid()).find("notes.txt"), std::string::npos);
+  EXPECT_TRUE(fs::exists(d + "/summary.json"));
+  EXPECT_NE(files::claim_results(d, "sleeve-circular", getpid(), true, "summary.json"), "");  // no resume
+  fs::remove(d + "/notes.txt");
+  ASSERT_EQ(files::claim_results(d, "sleeve-circular", getpid()), "");
+  EXPECT_FALSE(fs::exists(d + "/summary.json"));
+  EXPECT_FALSE(fs::exists(d + "/frames"));
+  files::Manifest m;
+  ASSERT_EQ(files::read_manifest(d, m), "");
+  EXPECT_FALSE(m.legacy);
+  files::release_results(d, getpid());
+}
+
+// A results folder inside another (a sweep's runs) is listed in the outer manifest as `name/` and
+// checked against its own: a user's file inside it keeps the outer folder refused.
+TEST(Files, NestedResultsFoldersAreCheckedByTheirOwnManifest) {
+  Scratch t;
+  const std::string sweep = t / "sweep", run = t / "sweep/g=400";
+  std::vector<std::string> known;
+  ASSERT_EQ(files::claim_results(sweep, "sweep beam", getpid()), "");
+  ASSERT_EQ(files::claim_results(run, "beam", getpid()), "");
+  ASSERT_EQ(files::record_result(run + "/summary.json", known), "");
+  touch(run + "/summary.json");
+  files::Manifest outer;
+  ASSERT_EQ(files::read_manifest(sweep, outer), "");
+  EXPECT_EQ(outer.entries, std::vector<std::string>{"g=400/"});
+  files::release_results(run, getpid());
+  files::release_results(sweep, getpid());
+  touch(run + "/mine.txt");
+  EXPECT_NE(files::claim_results(sweep, "sweep beam", getpid()).find("mine.txt"), std::string::npos);
+  EXPECT_TRUE(fs::exists(run + "/summary.json"));
+  fs::remove(run + "/mine.txt");
+  // A run inside that is still going (its lock's process alive): refused, not removed under it.
+  std::ofstream(run + "/.sma-lock") << getppid() << "\n";
+  EXPECT_NE(files::claim_results(sweep, "sweep beam", getpid()).find("in use"), std::string::npos);
+  EXPECT_TRUE(fs::exists(run + "/summary.json"));
+  fs::remove(run + "/.sma-lock");
+  ASSERT_EQ(files::claim_results(sweep, "sweep beam", getpid()), "");
+  EXPECT_FALSE(fs::exists(run));
+  files::release_results(sweep, getpid());
+  // A manifest line that leaves the folder is damage, named.
+  std::ofstream(sweep + "/.sma-results", std::ios::app) << "../victim\n";
+  EXPECT_NE(files::claim_results(sweep, "sweep beam", getpid()).find("damaged"), std::string::npos);
 }
 
 TEST(Files, ALiveRunsLockIsRespectedADeadRunsIsTaken) {

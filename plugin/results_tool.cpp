@@ -1,0 +1,31 @@
+// sma-results: the results folder's claim (plugin/core/files.hpp) for the suite's Python tools,
+// so that a sweep takes its folder by the same rules as a scene (one implementation: the manifest,
+// the lock, the removal of what an earlier run listed). Paths are arguments, never shell text.
+//   sma-results claim DIR SCENE PID    refuse DIR or lock it for PID, clear what its manifest lists
+//   sma-results release DIR PID        remove PID's lock of DIR
+// Exit 0 on success; else 1 and one line "error: <reason naming the path>" on stderr; 2 on a bad
+// command line.
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "core/files.hpp"
+
+int main(int argc, char** argv) {
+  const std::string verb = argc > 1 ? argv[1] : "";
+  char* end = nullptr;
+  const long pid = argc > 1 ? std::strtol(argv[argc - 1], &end, 10) : 0;
+  const bool pid_ok = end && *end == '\0' && pid > 0;
+  if (verb == "claim" && argc == 5 && pid_ok) {
+    const std::string error = sma::files::claim_results(argv[2], argv[3], pid);
+    if (error.empty()) return 0;
+    std::fprintf(stderr, "error: %s\n", error.c_str());
+    return 1;
+  }
+  if (verb == "release" && argc == 4 && pid_ok) {
+    sma::files::release_results(argv[2], pid);
+    return 0;
+  }
+  std::fprintf(stderr, "usage: sma-results claim DIR SCENE PID | release DIR PID\n");
+  return 2;
+}
