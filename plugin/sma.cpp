@@ -65,6 +65,10 @@
 //   string FileAbsolute(string path)               path made absolute (for messages)
 //   int FileEndsWith(string path, string tail)     1 if the file ends with tail (+ white space)
 //   string FileTruncate(string path, real length)  cuts the file to its first length bytes
+//   string FileChecksum(string path, real length)  FNV-1a 64 of the first length bytes (< 0: all), hex;
+//                                                  "" if unreadable or shorter
+//   string FileSeal(string path)                   appends "checksum <hex>" of the content
+//   string FileSealError(string path)              "" if the last line is the rest's checksum
 //   string ResultsClaim(string dir, string scene)  refuse a folder holding anything its manifest
 //                                                  does not list, lock it for this run (the lock
 //                                                  goes when the process exits), remove the
@@ -542,6 +546,11 @@ string* FileRemoveMatching(Stack stack, string* const& dir, string* const& patte
 long FileKind(string* const& path) { return sma::files::kind(*path); }
 string* FileAbsolute(Stack stack, string* const& path) { return NewString(stack, sma::files::absolute(*path)); }
 long FileEndsWith(string* const& path, string* const& tail) { return sma::files::ends_with(*path, *tail); }
+string* FileChecksum(Stack stack, string* const& path, double const& length) {
+  return NewString(stack, sma::files::checksum(*path, std::llround(length)));
+}
+string* FileSeal(Stack stack, string* const& path) { return NewString(stack, sma::files::seal(*path)); }
+string* FileSealError(Stack stack, string* const& path) { return NewString(stack, sma::files::seal_error(*path)); }
 string* FileTruncate(Stack stack, string* const& path, double const& length) {
   return NewString(stack, sma::files::truncate_file(*path, std::llround(length)));
 }
@@ -647,6 +656,9 @@ static void Load_Init() {
   Global.Add("FileAbsolute", "(", new OneOperator1s_<S, S>(FileAbsolute));
   Global.Add("FileEndsWith", "(", new OneOperator2_<long, S, S>(FileEndsWith));
   Global.Add("FileTruncate", "(", new OneOperator2s_<S, S, double>(FileTruncate));
+  Global.Add("FileChecksum", "(", new OneOperator2s_<S, S, double>(FileChecksum));
+  Global.Add("FileSeal", "(", new OneOperator1s_<S, S>(FileSeal));
+  Global.Add("FileSealError", "(", new OneOperator1s_<S, S>(FileSealError));
   Global.Add("ResultsClaim", "(", new OneOperator2s_<S, S, S>(ResultsClaim));
   Global.Add("ResultsClaimResumed", "(", new OneOperator3s_<S, S, S, S>(ResultsClaimResumed));
   Global.Add("ResultsRecord", "(", new OneOperator1s_<S, S>(ResultsRecord));

@@ -83,10 +83,10 @@ def phase_spans(summary, history):
     first_contact, austenite = summary["first_contact_step"], summary["austenite_step"]
     reversion = next((int(s) for s, f in zip(history["step"], history["fraction_austenite"]) if f > 0), None)
     begins = [0]
-    if first_contact > 0:
+    if first_contact is not None:  # null: no contact in the run
         begins.append(first_contact - 1)
         begins.append(max(first_contact, reversion) - 1 if reversion else None)
-        begins.append(austenite - 1 if austenite > 0 else None)
+        begins.append(austenite - 1 if austenite is not None else None)
     spans = []
     for k, begin in enumerate(begins):
         if begin is None:
@@ -164,7 +164,7 @@ def zoom_end(summary, t_end):
     ring is austenite for good (summary.json austenite_step x dt), or the whole run."""
     dt = summary["parameters"]["dt"]
     austenite = summary["austenite_step"]
-    return min(t_end, austenite * dt * 1.25 + 5 * dt) if austenite > 0 else t_end
+    return min(t_end, austenite * dt * 1.25 + 5 * dt) if austenite is not None else t_end
 
 
 def force_panels(fig, curves, summary, history, t_state, T_state, xlabel, title):

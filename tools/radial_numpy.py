@@ -382,7 +382,7 @@ def run(p):
     in_contact = np.flatnonzero(cols["contact_nodes"] > 0)
     not_austenite = np.flatnonzero(fa < 1)
     austenite_step = int(not_austenite[-1]) + 2 if not_austenite.size and not_austenite[-1] + 1 < steps else \
-        (1 if not not_austenite.size else -1)
+        (1 if not not_austenite.size else None)
     summary = {
         "scene": "sleeve-radial (numpy, tools/radial_numpy.py)",
         "parameters": {k: v for k, v in p.items() if k != "out"},
@@ -394,8 +394,8 @@ def run(p):
         "dc_iterations_mean": float(cols["dc_iterations"].mean()),
         "heat_balance_residual_max": heat_balance_max,
         "final_pressure_mean": float(cols["pressure_mean"][-1]), "lame_pressure": lame,
-        "first_contact_step": int(in_contact[0]) + 1 if in_contact.size else -1,
-        "T_inner_first_contact": float(cols["T_inner_mean"][in_contact[0]]) if in_contact.size else -1,
+        "first_contact_step": int(in_contact[0]) + 1 if in_contact.size else None,  # null: never (as the scenes)
+        "T_inner_first_contact": float(cols["T_inner_mean"][in_contact[0]]) if in_contact.size else None,
         "austenite_step": austenite_step,
         "peak_pressure_mean": float(cols["pressure_mean"].max()),
         "reversal_steps": reversal_steps, "pressure_zigzag_steps": zigzag_steps,

@@ -151,7 +151,7 @@ def check_values(param, values):
 
 
 def step_time(history, step):
-    """The time t (s) at the end of `step` (history.csv's row), or None (-1: never, or no row)."""
+    """The time t (s) at the end of `step` (history.csv's row), or None (null: never, or no row)."""
     if history is None or step is None or step < 1 or "step" not in history:
         return None
     rows = np.nonzero(history["step"] == step)[0]
@@ -200,7 +200,7 @@ def table_columns(runs):
 
 
 def write_table(path, param, values, runs):
-    """table.csv; returns its columns. A figure a run lacks (or -1 / never for a time) is empty."""
+    """table.csv; returns its columns. A figure a run lacks (or null: the event never happened) is empty."""
     columns = table_columns(runs)
     if columns is not None:
         header = [param] + [c for _, c in columns]

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cerrno>
 #include <csignal>
+#include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
@@ -474,6 +476,72 @@ inline std::string truncate_file(const std::string& path, long long length) {
     return "cannot cut " + path + " to " + std::to_string(length) + " bytes: it holds only " + std::to_string(size);
   fs::resize_file(path, (std::uintmax_t)length, ec);
   if (ec) return "cannot cut " + path + " to " + std::to_string(length) + " bytes: " + reason(ec);
+  return {};
+}
+
+// The FNV-1a 64-bit hash of the first `length` bytes of the file `path` (all of it when length < 0),
+// as 16 hex digits; "" when the file cannot be read or is shorter. Not a cryptographic seal: it
+// names an accidental or careless change (an edited number, a file cut or continued), which is
+// what a checkpoint's reader must not take for the run's state.
+inline std::string checksum(const std::string& path, long long length = -1) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return {};
+  std::uint64_t h = 14695981039346656037ULL;
+  char buffer[1 << 16];
+  long long left = length;
+  while (length < 0 || left > 0) {
+    const std::streamsize want = length < 0 ? (std::streamsize)sizeof buffer
+                                            : (std::streamsize)std::min<long long>(left, sizeof buffer);
+    in.read(buffer, want);
+    const std::streamsize got = in.gcount();
+    for (std::streamsize i = 0; i < got; ++i) {
+      h ^= (unsigned char)buffer[i];
+      h *= 1099511628211ULL;
+    }
+    left -= got;
+    if (got < want) break;
+  }
+  if (length >= 0 && left > 0) return {};
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", (unsigned long long)h);
+  return text;
+}
+
+inline const char* seal_word = "checksum ";
+
+// Appends the line "checksum <hex>" of the file's content so far (a checkpoint, once written).
+inline std::string seal(const std::string& path) {
+  const std::string sum = checksum(path);
+  if (sum.empty()) return "cannot read " + path + " to seal it";
+  std::ofstream out(path, std::ios::binary | std::ios::app);
+  out << seal_word << sum << "\n";
+  out.flush();
+  if (!out) return "cannot write " + path + " (disk full?)";
+  return {};
+}
+
+// "" when the file's last line is "checksum <hex>" of everything before it, else the reason: the
+// file was changed, cut or continued after it was sealed.
+inline std::string seal_error(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return "cannot be read";
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (text.empty() || text.back() != '\n') return "has no checksum line at its end (cut short, or written by another version)";
+  const auto start = text.rfind('\n', text.size() - 2);
+  const std::size_t line = start == std::string::npos ? 0 : start + 1;
+  const std::string last = text.substr(line, text.size() - 1 - line);
+  if (last.compare(0, std::strlen(seal_word), seal_word) != 0)
+    return "has no checksum line at its end (cut short, or written by another version)";
+  std::uint64_t h = 14695981039346656037ULL;
+  for (std::size_t i = 0; i < line; ++i) {
+    h ^= (unsigned char)text[i];
+    h *= 1099511628211ULL;
+  }
+  char sum[17];
+  std::snprintf(sum, sizeof sum, "%016llx", (unsigned long long)h);
+  if (last.substr(std::strlen(seal_word)) != sum)
+    return std::string("was changed after it was written (its content's checksum is ") + sum + ", its last line says " +
+           last.substr(std::strlen(seal_word)) + ")";
   return {};
 }
 

@@ -261,3 +261,37 @@ TEST(Files, ShellQuoteMakesOneWordOfAnything) {
   }
   EXPECT_FALSE(fs::exists("pwned"));
 }
+
+// FNV-1a 64 against its published test vectors; a sealed file verifies, and any change to it (an
+// edited byte, a cut, a line added) is named.
+TEST(Files, ChecksumAndSealNameAChangedFile) {
+  Scratch t;
+  const std::string f = t / "f";
+  touch(f, "");
+  EXPECT_EQ(files::checksum(f), "cbf29ce484222325");
+  touch(f, "a");
+  EXPECT_EQ(files::checksum(f), "af63dc4c8601ec8c");
+  touch(f, "foobar");
+  EXPECT_EQ(files::checksum(f), "85944171f73967e8");
+  touch(t / "g", "foo");
+  EXPECT_EQ(files::checksum(f, 3), files::checksum(t / "g"));  // a prefix
+  EXPECT_EQ(files::checksum(f, 7), "");                  // longer than the file
+  EXPECT_EQ(files::checksum(t / "none"), "");
+  const std::string ck = t / "checkpoint.txt";
+  touch(ck, "sma-sleeve-checkpoint 2\nstep 20\nend\n");
+  ASSERT_EQ(files::seal(ck), "");
+  EXPECT_EQ(files::seal_error(ck), "");
+  std::string text;
+  {
+    std::ifstream in(ck);
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  std::string edited = text;
+  edited.replace(edited.find("20"), 2, "21");
+  touch(ck, edited);
+  EXPECT_NE(files::seal_error(ck).find("changed after it was written"), std::string::npos);
+  touch(ck, text.substr(0, text.size() - 5));
+  EXPECT_NE(files::seal_error(ck).find("no checksum line"), std::string::npos);
+  touch(ck, text + "step 22\n");
+  EXPECT_NE(files::seal_error(ck).find("no checksum line"), std::string::npos);
+}
