@@ -60,8 +60,22 @@ def main():
                            "-interference", "5e-5", "-out", os.path.join(ROOT, "build", "test-results", "geometry-both")],
                           cwd=ROOT, capture_output=True, text=True)
     said = both.stdout + both.stderr  # FreeFEM writes cerr to stdout
-    check(both.returncode != 0 and "give -Ri or -interference" in said,
-          f"-Ri with -interference: exit {both.returncode}, output {said.strip()[-200:]!r}")
+    check(both.returncode != 0 and "-Ri 0.05 and -interference 5e-05 disagree" in said,
+          f"-Ri with -interference that disagree: exit {both.returncode}, output {said.strip()[-200:]!r}")
+    # Both, agreeing (Ri = pipeA - interference): every option at its printed default is valid.
+    agree = summary(run_scene("sleeve-radial", "geometry-both-agree", "-quiet", "1", "-nr", "10", "-steps", "20",
+                              "-Ri", "0.05", "-interference", "0.0005"))["parameters"]
+    check(abs(agree["ring_inner_radius"] - 0.05) <= 1e-15,
+          f"-Ri 0.05 -interference 0.0005 (they agree) run with Ri = {agree['ring_inner_radius']}")
+    # -interference 0 given is no interference (it meant the 0.5 mm default once): the ring only
+    # touches the pipe; the clearance note says it touches from the first step.
+    zero = run_scene("sleeve-radial", "geometry-zero-interference", "-quiet", "1", "-nr", "10", "-steps", "50",
+                     "-interference", "0")
+    zs = summary(zero)
+    check(zs["parameters"]["ring_inner_radius"] == zs["parameters"]["pipe_A"] and zs["final_pressure_mean"] == 0
+          and zs["lame_pressure"] == 0,
+          f"-interference 0: Ri = pipeA ({zs['parameters']['ring_inner_radius']} / {zs['parameters']['pipe_A']}), "
+          f"final pressure {zs['final_pressure_mean']} Pa, Lame {zs['lame_pressure']} Pa")
     g_only = summary(run_scene("sleeve-radial", "geometry-g-only", "-quiet", "1", "-nr", "10", "-steps", "20",
                                "-g", "1000"))["parameters"]
     check(g_only["g"] == 1000 and g_only["g_contact"] == 1000,

@@ -37,7 +37,7 @@ def force_temperature(outdir, summary, others):
         curves[os.path.relpath(os.path.dirname(path))] = (o["T_inner_mean"], o["pressure_mean"], o["t"])
     fig = plt.figure(figsize=(13, 4.8))
     legend, left, right = force_panels(fig, curves, summary, h, [0.0] + h["t"],
-                                       state_values(summary, h, "T_inner_mean"), "inner-surface temperature (C)",
+                                       state_values(summary, h, "T_inner_mean"), "inner-surface temperature (°C)",
                                        f"{summary['scene']}: clamping pressure against temperature and time")
     for ax in (left, right):
         ax.axhline(summary["lame_pressure"] / 1e6, color="k", ls=":", lw=0.8,
@@ -83,7 +83,7 @@ def fields(outdir, summary):
     axes[0].set_title("sigma_rr (solid), sigma_tt (dashed)", fontsize=9)
     axes[0].set_ylabel("stress (MPa)")
     axes[1].set_title("temperature", fontsize=9)
-    axes[1].set_ylabel("T (C)")
+    axes[1].set_ylabel("T (°C)")
     # The radial CSV's phase is the signed martensite fraction chi: +1 all M1, 0 A, -1 all M2.
     axes[2].set_title("phase: signed martensite fraction", fontsize=9)
     axes[2].set_ylabel("phase (1): M1 > 0, A = 0, M2 < 0")

@@ -222,7 +222,7 @@ def force_temperature(outdir, summary):
     curves = {labels[n]: (p[f"T_{n}_K"], p[f"pressure_{n}_Pa"], p["t"]) for n in names}
     fig = plt.figure(figsize=(13, 4.8))
     legend, _, _ = force_panels(fig, curves, summary, h, [0.0] + h["t"], state_values(summary, h, "T_inner_mean"),
-                          "temperature of the point: the inner-surface node at the curve's angle (C)",
+                          "temperature of the point: the inner-surface node at the curve's angle (°C)",
                           f"{summary['scene']}: contact pressure at three inner-surface points "
                           "(phase shading at the inner surface's mean temperature)")
     fig.tight_layout()
@@ -450,12 +450,21 @@ def iterations(outdir, summary):
     save(fig, os.path.join(outdir, "iterations.png"), 120)
 
 
-def phase_colorbar(fig, ax, mappable):
-    """A colour bar with the phases' names at their values 0, 1, 2."""
-    bar = fig.colorbar(mappable, ax=ax, shrink=0.8, ticks=range(len(PHASE_NAMES)))
-    bar.ax.set_yticklabels(PHASE_NAMES)
+PHASE_COLOURS = ("0.75", "tab:red", "tab:blue")  # A, M1, M2
+
+
+def phase_map(ax, fig, tri, phases):
+    """The phase field in the colours of PHASE_COLOURS, its colour bar naming only the phases
+    present (a bar with an M2 colour where no point is M2 misleads)."""
+    present = sorted({int(round(v)) for v in phases})
+    index = {p: k for k, p in enumerate(present)}
+    cmap = mcolors.ListedColormap([PHASE_COLOURS[p] for p in present])
+    levels = [k - 0.5 for k in range(len(present) + 1)]
+    mappable = ax.tricontourf(tri, [index[int(round(v))] for v in phases], levels=levels, cmap=cmap)
+    bar = fig.colorbar(mappable, ax=ax, shrink=0.8, ticks=range(len(present)))
+    bar.ax.set_yticklabels([PHASE_NAMES[p] for p in present])
     bar.set_label("phase")
-    return bar
+    return mappable
 
 
 def fields(outdir, summary):
@@ -473,11 +482,9 @@ def fields(outdir, summary):
         sigma = axes[0].tricontourf(tri, [v / 1e6 for v in d["sigma_rr"]], levels=20)
         fig.colorbar(sigma, ax=axes[0], shrink=0.8).set_label("sigma_rr (MPa)")
         temp = axes[1].tricontourf(tri, [celsius(v) for v in d["T"]], levels=20)
-        fig.colorbar(temp, ax=axes[1], shrink=0.8).set_label("T (C)")
-        phase_cmap = mcolors.ListedColormap(["0.75", "tab:red", "tab:blue"])
-        phase = axes[2].tricontourf(tri, d["phase"], levels=[-0.5, 0.5, 1.5, 2.5], cmap=phase_cmap)
-        phase_colorbar(fig, axes[2], phase)
-        for ax, label in zip(axes, ("radial stress", "temperature", "phase: austenite A, martensite M1, M2")):
+        fig.colorbar(temp, ax=axes[1], shrink=0.8).set_label("T (°C)")
+        phase_map(axes[2], fig, tri, d["phase"])
+        for ax, label in zip(axes, ("radial stress", "temperature", "phase (A austenite, M1 and M2 martensite)")):
             ax.set_aspect("equal")
             ax.set_title(label, fontsize=9)
             ax.set_xlabel("x (mm)")

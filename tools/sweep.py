@@ -31,6 +31,7 @@ import concurrent.futures
 import csv
 import json
 import os
+import re
 import shlex
 import sys
 
@@ -50,13 +51,43 @@ KEY_FIGURES = [("first_contact_step", "first_contact_step"), ("first_contact_tim
                ("austenite_step", "austenite_step"), ("austenite_time", "austenite_time_s"),
                ("T_inner_austenite", "T_inner_austenite_K"),
                ("final_pressure_mean", "final_pressure_mean_Pa"), ("peak_pressure_mean", "peak_pressure_mean_Pa"),
-               ("peak_step", "peak_step"), ("final_pressure_non_uniformity", "final_pressure_non_uniformity")]
+               ("peak_step", "peak_step"), ("final_pressure_non_uniformity", "final_pressure_non_uniformity"),
+               ("lame_pressure", "lame_pressure_Pa")]  # (the radial model: Lame's closed form at the end)
 TRAILING_FIGURES = [("unconverged_loops", "unconverged_loops"), ("wall_seconds", "wall_s")]
 STEP_TIMES = {"first_contact_time": "first_contact_step", "austenite_time": "austenite_step"}
 COINCIDE = 1e-3  # relative to a curve's largest |pressure|: curves closer share a legend entry
 ZOOM_PAST_AUSTENITE = 1.25  # the transient panel ends a quarter past the last austenite time
 # Folders are named <param>=<value>: a value must not leave DIR.
 BAD_VALUE_CHARACTERS = ("/", "\0")
+
+
+# The unit symbols an option's meaning may give in parentheses: "Young's modulus (Pa)",
+# "heat exchange coefficient (W/(m^2 K))"; a group with any other word ("(0 included: ...)") is prose.
+UNIT_WORDS = {"m", "mm", "um", "s", "K", "C", "Pa", "MPa", "GPa", "W", "J", "kg", "N", "deg", "rad"}
+
+
+def unit_of(meaning):
+    """The unit an option's meaning gives (the first parenthesised group made only of unit symbols,
+    powers and operators), or "" (a count, a switch, a name)."""
+    depth, start = 0, None
+    for i, c in enumerate(meaning):
+        if c == "(":
+            if depth == 0:
+                start = i + 1
+            depth += 1
+        elif c == ")" and depth > 0:
+            depth -= 1
+            if depth == 0:
+                group = meaning[start:i]
+                words = [w for w in re.split(r"[\s()/*^.\-0-9]+", group) if w]
+                if words and all(w in UNIT_WORDS for w in words):
+                    return group
+    return ""
+
+
+def value_label(param, value, unit):
+    """A legend entry: "-interference 5e-05 m" (the option as typed, with its unit)."""
+    return f"-{param} {value}" + (f" {unit}" if unit else "")
 
 
 class BadInput(Exception):
@@ -246,22 +277,24 @@ def coincident_groups(curves):
     return groups
 
 
-def draw(out, scene, param, values, runs, plt):
+def draw(out, scene, param, values, runs, plt, unit="", fixed=None):
     """The two overlays; returns (the paths written, the groups of values whose curves coincide)."""
     from plot_sleeve import save  # every tool's PNGs: a temporary name, then renamed
     histories = [r.history for r in runs]
     temperature = [(h["T_inner_mean"] - KELVIN_AT_0C, h["pressure_mean"] / 1e6) for h in histories]
     time = [(h["t"], h["pressure_mean"] / 1e6) for h in histories]
     groups = coincident_groups(time)
-    labels = [", ".join(f"{param} = {values[i]}" for i in g) + (" (coincide within 0.1 %)" if len(g) > 1 else "")
+    labels = [", ".join(value_label(param, values[i], unit) for i in g) + (" (coincide within 0.1 %)" if len(g) > 1 else "")
               for g in groups]
-    title = f"{scene}: sweep of -{param}"
+    # The options every run shares, in the title: the figure says what was held fixed.
+    held = " ".join(f"-{k} {v}" for k, v in (fixed or {}).items())
+    title = f"{scene}: sweep of -{param}" + (f"\n(all runs: {held})" if held else "")
     written = []
 
     fig, ax = plt.subplots(figsize=(7, 4.5))
     for group, label in zip(groups, labels):
         ax.plot(*temperature[group[0]], lw=1.2, label=label)
-    ax.set_xlabel("mean inner-surface temperature (C)")
+    ax.set_xlabel("mean inner-surface temperature (°C)")
     ax.set_ylabel("mean contact pressure (MPa)")
     ax.set_title(title)
     ax.grid(alpha=0.3)
@@ -364,7 +397,8 @@ def sweep(argv):
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
-        written, groups = draw(out, scene, param, done_values, results, plt)
+        unit = unit_of(sma.options(scene)[param]["meaning"])
+        written, groups = draw(out, scene, param, done_values, results, plt, unit, fixed)
     else:
         if results:
             note = f"{scene} writes no history.csv with a contact pressure (pressure_mean): the table only"
