@@ -2,7 +2,8 @@
 """A sleeve run stopped half-way and resumed (-checkpoint N, -resume 1) equals the uninterrupted run.
 
 For sleeve-circular and sleeve-elliptic-friction (coarse mesh: the friction scene covers the
-contact warm start, the slip thresholds and the slip history) and sleeve-radial, 300 steps,
+contact warm start, the slip thresholds and the slip history), sleeve-radial and a variant whose
+heat-condition hook depends on time (tests/hooks/heat-ramp.edp, docs/hooks.md), 300 steps,
 a checkpoint every 50:
   - A: the uninterrupted run with -checkpoint 50; its outputs equal, byte for byte, those of the
     same run without -checkpoint (writing checkpoints changes nothing) and it leaves no
@@ -31,7 +32,9 @@ from checklib import ROOT, check, finish, record  # noqa: E402
 
 CASES = [("sleeve-circular", ["-mesh", "meshes/sleeve-coarse.msh"]),
          ("sleeve-elliptic-friction", ["-mesh", "meshes/sleeve-coarse.msh"]),
-         ("sleeve-radial", [])]
+         ("sleeve-radial", []),
+         # a variant's hook that depends on time through sleeveTime (docs/hooks.md, rule 3)
+         ("tests/hooks/heat-ramp.edp", [])]
 COMMON = ["-steps", "300", "-quiet", "1"]
 TIMING = ("wall_seconds", "resumed_from_step", "backsolve_floor_seconds_per_step", "loop_over_floor",
           "stiffness_backsolve_seconds", "heat_backsolve_seconds", "backsolves_needed_seconds",
@@ -39,7 +42,8 @@ TIMING = ("wall_seconds", "resumed_from_step", "backsolve_floor_seconds_per_step
 
 
 def run(scene, out, *extra):
-    return subprocess.run([os.path.join(ROOT, "tools", "ff"), f"edp/scenes/{scene}.edp", *COMMON, *extra,
+    script = scene if scene.endswith(".edp") else f"edp/scenes/{scene}.edp"
+    return subprocess.run([os.path.join(ROOT, "tools", "ff"), script, *COMMON, *extra,
                            "-out", out], cwd=ROOT, capture_output=True, text=True, timeout=300)
 
 
@@ -72,10 +76,10 @@ def same_files(a, b, skip=("summary.json",)):
 
 
 def main():
-    measured = []
+    measured, temperatures = [], {}
     with tempfile.TemporaryDirectory(prefix="resume-") as tmp:
         for scene, options in CASES:
-            plain, full, stopped = (os.path.join(tmp, f"{scene}-{k}") for k in ("plain", "A", "B"))
+            plain, full, stopped = (os.path.join(tmp, f"{os.path.basename(scene)}-{k}") for k in ("plain", "A", "B"))
             r0 = run(scene, plain, *options)
             ra = run(scene, full, *options, "-checkpoint", "50")
             check(r0.returncode == 0 and ra.returncode == 0,
@@ -118,10 +122,18 @@ def main():
                   f"{scene}: the resumed run's {count} files equal the uninterrupted run's byte for byte "
                   f"(differ: {differ}), its summary.json too but for the timing "
                   f"({'equal' if sa == sb else 'DIFFERS'}), resumed_from_step {resumed_from} (100)")
+            with open(os.path.join(full, "history.csv")) as f:
+                temperatures[scene] = [line.split(",")[2] for line in f][1:]
             measured.append({"scene": scene, "files": count, "differ": differ, "summary_equal": sa == sb,
                              "resumed_from_step": resumed_from, "rows_at_stop": rows})
             for folder in (plain, full, stopped):
                 shutil.rmtree(folder, ignore_errors=True)
+    # The hook acted: its air temperature, swinging with sleeveTime, moved the inner temperature
+    # away from sleeve-circular's on the same mesh (a hook that saw sleeveTime = 0 would not).
+    ramp, base = temperatures.get("tests/hooks/heat-ramp.edp", []), temperatures.get("sleeve-circular", [])
+    differing = sum(1 for a, b in zip(ramp, base) if a != b)
+    check(len(ramp) == len(base) == 300 and differing > 200,
+          f"the time-dependent hook changes the inner temperature at {differing} of {len(ramp)} steps")
     record("resume", {"test": "resume", "steps": 300, "checkpoint_every": 50, "stopped_after": 130,
                       "runs": measured})
     finish()
