@@ -56,8 +56,7 @@ def read_vtu(path):
 
 
 def triangles(grid):
-    """Indices of the triangle cells (savevtk also writes the boundary edges, as lines) and their
-    point ids."""
+    """Indices of the triangle cells and their point ids."""
     ids = [i for i in range(grid.GetNumberOfCells()) if grid.GetCellType(i) == VTK_TRIANGLE]
     return ids, [[grid.GetCell(i).GetPointId(k) for k in range(3)] for i in ids]
 
@@ -174,6 +173,9 @@ def main():
     g = grids["fields-3-end.vtu"]
     csv = rows(os.path.join(out, "fields-3-end.csv"))
     tri_ids, tri_pts = triangles(g)
+    check(len(tri_ids) == g.GetNumberOfCells() == len(csv),
+          f"fields-3-end.vtu's cells are the {len(csv)} triangles only ({g.GetNumberOfCells()} cells, "
+          f"{len(tri_ids)} triangles): no boundary line cells among them")
     cd, pd = g.GetCellData(), g.GetPointData()
     worst = {}
     for field in ("phase", "sigma_rr", "sigma_tt", "T0_local"):

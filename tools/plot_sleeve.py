@@ -374,9 +374,18 @@ def displacement(outdir, summary):
     if ellipse:
         left.plot(angle, [n[2] * 1e6 for n in nodes], "k--", lw=1, label="pipe surface: the u_r that touches it")
     else:
-        middle.text(0.5, 0.5, "the run's obstacle is not summary.json's ellipse\n(a variant's ObstacleAt):\n"
-                    "the gap along the surface is not drawn; points.csv's gap (right) is the run's own",
-                    ha="center", va="center", transform=middle.transAxes, fontsize=8)
+        # A variant's own obstacle (ObstacleAt): its gap at the other instants cannot be recomputed
+        # here, but the run wrote its own at the end (contact-final.csv's gap, any obstacle shape).
+        final = read_csv(os.path.join(outdir, "contact-final.csv"))
+        if "gap" in final:
+            end = sorted((math.degrees(math.atan2(y, x)), g) for x, y, g in zip(final["x"], final["y"], final["gap"]))
+            middle.plot([a for a, _ in end], [g * 1e6 for _, g in end], "-o", ms=2, lw=1, color="k",
+                        label="end (contact-final.csv: the run's own obstacle)")
+            middle_top = max(g for _, g in end)
+        else:
+            middle.text(0.5, 0.5, "the run's obstacle is not summary.json's ellipse\n(a variant's ObstacleAt):\n"
+                        "the gap along the surface is not drawn; points.csv's gap (right) is the run's own",
+                        ha="center", va="center", transform=middle.transAxes, fontsize=8)
     middle.axhline(0, color="k", lw=0.8)
     gap_axis(middle, middle_top)
     for ax in (left, middle):
