@@ -167,7 +167,8 @@ test: plugin meshes
 # pasted into the recipe: every make variable reaches the shell through the environment. ARGS is
 # read by sweep.py itself (--env-args: split into words like a shell's, never run by one, so
 # ARGS='-steps 30; touch x' is the option -steps '30;' and two stray words, an error, and nothing
-# runs); VALUES is only split into words by the recipe (set -f: no file-name globbing either).
+# runs); VALUES too (--env-values: split at white space, each word a value, never a flag: VALUES='--out=x 500'
+# is refused as a value, not taken as --out).
 # OUT counts only when given (command line or environment): make ensemble's default OUT is not a
 # sweep's folder, wherever its line stands in this file.
 SWEEP_OUT_DEFAULT = results/sweeps/$(SCENE)-$(PARAM)
@@ -180,7 +181,7 @@ sweep: export SWEEP_DIR := $(if $(filter command line environment environment ov
 sweep: check-scene plugin meshes
 	@set -f; if [ -z "$$SWEEP_PARAM" ] || [ -z "$$SWEEP_VALUES" ]; then \
 	  echo "error: make sweep needs PARAM=<option without its dash> and VALUES='<v1> <v2> ...'" >&2; exit 2; fi; \
-	  $(PYTHON) tools/sweep.py "$$SWEEP_SCENE" "$$SWEEP_PARAM" $$SWEEP_VALUES --jobs "$$SWEEP_JOBS" \
+	  $(PYTHON) tools/sweep.py "$$SWEEP_SCENE" "$$SWEEP_PARAM" --env-values SWEEP_VALUES --jobs "$$SWEEP_JOBS" \
 	    --out "$$SWEEP_DIR" --env-args SWEEP_ARGS
 
 # Speed against error, all measured in one run: docs/benchmarks.md, results/bench/summary.json.
@@ -199,17 +200,27 @@ paper-scale: plugin meshes
 
 # Monte Carlo over the seeds of sleeve-random-threshold, seeds round-robin over NP MPI ranks
 # (docs/ensembles.md). OpenMPI refuses root without the two ALLOW variables; an idle rank yields
-# the core to the others' children instead of busy-polling.
+# the core to the others' children instead of busy-polling. The ranks are started by mpiexec
+# itself, never through Debian's ff-mpirun, which joins its arguments into a string for `eval`
+# (a `;` in ARGS or OUT ran as a command); NP and SEEDS must be whole numbers >= 1.
 NP ?= 2
 SEEDS ?= 8
 OUT ?= results/sleeve-random-ensemble
 # NP, SEEDS, OUT and ARGS reach tools/run_scene.py through the environment (see run).
 ensemble: export RUN_ARGS := $(value ARGS)
-ensemble: export RUN_FIXED := -v 0 -seeds $(value SEEDS) -out $(value OUT)
-ensemble: export RUN_LAUNCHER := ff-mpirun -np $(value NP)
+ensemble: export RUN_FIXED := -v 0 -seeds $(value SEEDS)
+ensemble: export RUN_OUT := $(value OUT)
+ensemble: export RUN_LAUNCHER := mpiexec --oversubscribe -np $(value NP) FreeFem++-mpi -nw -ne
+ensemble: export ENSEMBLE_NP := $(value NP)
+ensemble: export ENSEMBLE_SEEDS := $(value SEEDS)
 ensemble: plugin meshes
+	@if [[ ! "$$ENSEMBLE_NP" =~ ^[1-9][0-9]{0,3}$$ ]]; then \
+	  echo "error: make ensemble: NP='$$ENSEMBLE_NP' must be a whole number of MPI ranks from 1 to 9999" >&2; exit 2; fi
+	@if [[ ! "$$ENSEMBLE_SEEDS" =~ ^[1-9][0-9]{0,5}$$ ]]; then \
+	  echo "error: make ensemble: SEEDS='$$ENSEMBLE_SEEDS' must be a whole number of seeds from 1 to 999999" >&2; exit 2; fi
 	@OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_mpi_yield_when_idle=1 \
 	  FF_INCLUDEPATH="$$(pwd -P)/edp/lib;$$(pwd -P)/edp/model;$$(pwd -P)/edp/solvers;$$(pwd -P)/edp/problems;/usr/include/freefem++/idp;./" \
+	  FF_LOADPATH="$$(pwd -P)/plugin/build;/usr/lib/freefem++;./" \
 	  $(PYTHON) tools/run_scene.py edp/ensemble/sleeve-random-ensemble.edp results/sleeve-random-ensemble \
 	  $(PYTHON) tools/plot_ensemble.py
 

@@ -70,15 +70,23 @@ class ResultsError(Exception):
 
 def read_json(path):
     """The object of a JSON file (a summary.json): a dict, or a ResultsError naming the file."""
+    def no_constant(word):  # NaN, Infinity: no JSON the scenes write holds them
+        raise ValueError(f"'{word}' is not a JSON number")
     try:
-        with open(path) as f:
-            value = json.load(f)
+        with open(path, encoding="utf-8") as f:
+            value = json.load(f, parse_constant=no_constant)
     except FileNotFoundError:
         raise ResultsError(f"{path} is missing (the run did not finish, or wrote elsewhere)") from None
-    except (json.JSONDecodeError, UnicodeDecodeError) as e:
-        raise ResultsError(f"{path} is damaged ({e}): run the scene again") from None
+    except IsADirectoryError:
+        raise ResultsError(f"{path} is a directory, not the run's file") from None
+    except OSError as e:
+        raise ResultsError(f"{path} cannot be read ({e.strerror})") from None
+    except (ValueError, UnicodeDecodeError, RecursionError) as e:  # JSONDecodeError is a ValueError
+        raise ResultsError(f"{path} is damaged ({type(e).__name__}: {str(e)[:200]}): run the scene again") from None
     if not isinstance(value, dict):
         raise ResultsError(f"{path} is damaged (not a JSON object): run the scene again")
+    if not isinstance(value.get("parameters", {}), dict):
+        raise ResultsError(f"{path} is damaged (its parameters are not a JSON object): run the scene again")
     return value
 
 
@@ -87,10 +95,15 @@ def read_csv(path, skip_comment=True):
     header's number of fields, every field a finite or nan number; else a ResultsError naming the
     file, its line and its column."""
     try:
-        with open(path, newline="") as f:
+        # utf-8-sig: a byte-order mark (an editor's) is not part of the first column's name
+        with open(path, newline="", encoding="utf-8-sig") as f:
             lines = [(number, ln) for number, ln in enumerate(f, 1) if not (skip_comment and ln.startswith("#"))]
     except FileNotFoundError:
         raise ResultsError(f"{path} is missing (the run did not finish, or wrote elsewhere)") from None
+    except IsADirectoryError:
+        raise ResultsError(f"{path} is a directory, not the run's file") from None
+    except OSError as e:
+        raise ResultsError(f"{path} cannot be read ({e.strerror})") from None
     except UnicodeDecodeError as e:
         raise ResultsError(f"{path} is damaged ({e}): run the scene again") from None
     if not lines:
@@ -120,9 +133,14 @@ def read_csv(path, skip_comment=True):
 
 
 def guard(main):
-    """Runs main(); a ResultsError ends the process with its one error line and exit code 1."""
+    """Runs main(); a ResultsError, or a file that cannot be written (a full disk, a file-size
+    limit), ends the process with its one error line and exit code 1."""
     try:
         main()
     except ResultsError as e:
         print(f"error: {e}", file=sys.stderr)
+        sys.exit(1)
+    except OSError as e:
+        where = f" {e.filename}" if e.filename else ""
+        print(f"error: cannot write{where}: {e.strerror or e}", file=sys.stderr)
         sys.exit(1)

@@ -4,7 +4,8 @@
 Usage (the Makefile's):  tools/run_scene.py SCRIPT DEFAULT_OUT [PLOT COMMAND ...]
   with, from the environment:
     RUN_ARGS      the user's ARGS
-    RUN_FIXED     words the Makefile puts before them (make ensemble: -v 0 -seeds N -out OUT)
+    RUN_FIXED     words the Makefile puts before them (make ensemble: -v 0 -seeds N)
+    RUN_OUT       an output folder the Makefile gives (make ensemble's OUT): one word, as typed
     RUN_LAUNCHER  the command that runs a script (default tools/ff; make ensemble: ff-mpirun -np N)
 What the user types reaches this script through the environment, never pasted into a shell
 command: it is split like a shell's words (quotes group: -out 'my dir') but nothing in it is ever
@@ -48,15 +49,29 @@ def main(argv):
     script, default_out, plot = argv[0], argv[1], argv[2:]
     launcher = words_of("RUN_LAUNCHER") or [os.path.join(ROOT, "tools", "ff")]
     user = words_of("RUN_ARGS")
-    words = words_of("RUN_FIXED") + user
-    run = children.run(launcher + [script] + words)
+    words = words_of("RUN_FIXED") + (["-out", os.environ["RUN_OUT"]] if os.environ.get("RUN_OUT") else []) + user
+    # No shell ever sees these words, so nothing expands `~`: a folder named ~ would be made here.
+    home = [w for w in words if w == "~" or w.startswith("~/")]
+    if home:
+        print(f"error: '{home[0]}': ~ is not expanded (no shell reads ARGS or OUT): give the folder's full "
+              "path, e.g. $HOME/...", file=sys.stderr)
+        return 2
+    try:
+        run = children.run(launcher + [script] + words)
+    except OSError as e:  # the launcher itself missing (mpiexec, FreeFem++-mpi not installed)
+        print(f"error: cannot start {launcher[0]}: {e.strerror} (run 'make deps')", file=sys.stderr)
+        return 3
     if run.returncode != 0:
         return run.returncode
     if "-help" in user:
         return 0
     out = output_folder(words, default_out)
     if plot:
-        drawn = children.run(plot + [out])
+        try:
+            drawn = children.run(plot + [out])
+        except OSError as e:
+            print(f"error: cannot start the plot command {plot[0]}: {e.strerror}", file=sys.stderr)
+            return 3
         if drawn.returncode != 0:
             print(f"error: drawing the figures of {out} failed ({' '.join(plot)})", file=sys.stderr)
             return drawn.returncode

@@ -123,6 +123,10 @@ def word(scene, name, value):
             refuse("a string option takes a str")
         if value == "" or any(c in value for c in "\n\r\0"):
             refuse("empty, or with a line break or a NUL")
+        if value.startswith("-") and value.lstrip("-").isalpha():
+            # tools/ff and the scripts take "-help" anywhere for a request to list the options: the
+            # run would print them, exit 0 and compute nothing
+            refuse("an option name, not a value")
         return value
     if isinstance(value, str):
         text = value.strip()
@@ -130,6 +134,13 @@ def word(scene, name, value):
         if not re.match(pattern, text):
             refuse(f"not a whole {'integer' if kind == 'int' else 'number'}")
         value = int(text) if kind == "int" else float(text)
+    if isinstance(value, numbers.Real) and not isinstance(value, numbers.Integral):
+        try:
+            float(value)
+        except OverflowError:
+            refuse("beyond a double")
+    if kind == "real" and isinstance(value, numbers.Integral) and abs(int(value)) > 1.7976931348623157e308:
+        refuse("beyond a double")
     if kind == "int":
         if not isinstance(value, numbers.Integral):
             refuse("an int option takes an integer")
@@ -152,7 +163,18 @@ def command(scene, out, **values):
             raise SceneError(f"{scene}: give the output folder as run()'s `out`, not as an option")
         check_option(scene, name)
         words += ["-" + name, word(scene, name, value)]
-    return words + ["-out", str(out)]
+    return words + ["-out", folder(out)]
+
+
+def folder(out):
+    """`out` as a path: a str or an os.PathLike (pathlib), not empty; anything else (None, bytes,
+    a number) is refused rather than turned into a folder named "None" or "b'...'"."""
+    if not isinstance(out, (str, os.PathLike)) or isinstance(out, bytes):
+        raise SceneError(f"the output folder {out!r} is not a path (a str or a pathlib.Path)")
+    path = os.fspath(out)
+    if not isinstance(path, str) or path == "" or any(c in path for c in "\n\r\0"):
+        raise SceneError(f"the output folder {out!r} is not a usable path (empty, bytes, or with a line break)")
+    return path
 
 
 def run(scene, out, quiet=True, **values):
@@ -170,31 +192,21 @@ def run(scene, out, quiet=True, **values):
         raise SceneError(f"{scene} {given} failed (exit {result.returncode})"
                          + (f": {errors[0][len('error:'):].strip()}" if errors else "")
                          + "\n  last lines of its log:\n    " + "\n    ".join(log[-LOG_LINES:]))
+    written = os.path.join(ROOT, folder(out), "summary.json")
+    if not os.path.isfile(written):
+        raise SceneError(f"{scene} {' '.join(words[2:])} exited 0 but wrote no {written}: nothing was computed")
     return out
 
 
 def read_csv(path):
-    """{column: numpy array} of a CSV the scenes write (`#` lines skipped; a column that is not all
-    numbers stays strings); None if the file is absent."""
-    if not os.path.isfile(path):
+    """{column: numpy array} of a CSV the scenes write, read by results_io.read_csv (the plot
+    tools' reader: every field a number, a damaged file named); None if the file is absent."""
+    if not os.path.lexists(path):
         return None
-    with open(path) as f:
-        lines = [ln.rstrip("\n") for ln in f if not ln.startswith("#") and ln.strip()]
-    if not lines:
-        raise SceneError(f"{path} has no header line")
-    names = lines[0].split(",")
-    rows = [ln.split(",") for ln in lines[1:]]
-    for number, row in enumerate(rows, 2):
-        if len(row) != len(names):
-            raise SceneError(f"{path}: data line {number} has {len(row)} fields, the header {len(names)}")
-    columns = {}
-    for k, name in enumerate(names):
-        values = [r[k] for r in rows]
-        try:
-            columns[name] = np.array([float(v) for v in values])
-        except ValueError:
-            columns[name] = np.array(values)
-    return columns
+    try:
+        return {name: np.array(values) for name, values in results_io.read_csv(path).items()}
+    except results_io.ResultsError as e:
+        raise SceneError(str(e)) from None
 
 
 class Results:
@@ -204,16 +216,16 @@ class Results:
 
     def __init__(self, out):
         self.out = out
-        path = os.path.join(out, "summary.json")
+        path = os.path.join(folder(out), "summary.json")
         if not os.path.isfile(path):
             raise SceneError(f"no summary.json in {out}: no run finished there (a scene writes it last)")
         try:
             self.summary = results_io.read_json(path)
         except results_io.ResultsError as e:
             raise SceneError(str(e)) from None
-        self.history = read_csv(os.path.join(out, "history.csv"))
-        self.points = read_csv(os.path.join(out, "points.csv"))
-        self.contact = read_csv(os.path.join(out, "contact-final.csv"))
+        self.history = read_csv(os.path.join(folder(out), "history.csv"))
+        self.points = read_csv(os.path.join(folder(out), "points.csv"))
+        self.contact = read_csv(os.path.join(folder(out), "contact-final.csv"))
 
     def __repr__(self):
         files = [n for n in ("history", "points", "contact") if getattr(self, n) is not None]

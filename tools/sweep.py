@@ -104,7 +104,7 @@ def parse(argv):
     if "--" in argv:
         cut = argv.index("--")
         argv, extra = argv[:cut], list(argv[cut + 1:])
-    flags = {"--jobs": None, "--out": None, "--env-args": None}
+    flags = {"--jobs": None, "--out": None, "--env-args": None, "--env-values": None}
     positional = []
     i = 0
     while i < len(argv):
@@ -123,6 +123,11 @@ def parse(argv):
         else:
             positional.append(arg)
         i += 1
+    if flags["--env-values"]:
+        # make sweep's VALUES: words of a variable, never flags (VALUES='--out=x 500' is a value)
+        positional += os.environ.get(flags["--env-values"], "").split()
+    if flags["--out"] is not None and not flags["--out"].strip():
+        raise BadInput("--out (OUT) is empty: give a folder, or leave it out for results/sweeps/<scene>-<param>")
     if len(positional) < 3:
         raise BadInput("usage: tools/sweep.py SCENE PARAM VALUE [VALUE ...] [--jobs N] [--out DIR] "
                        "[-- SCENE OPTIONS ...]")
@@ -144,6 +149,9 @@ def parse(argv):
     param = positional[1]
     if param.startswith("-"):
         raise BadInput(f"PARAM '{param}': give the option's name without its dash ({param.lstrip('-')})")
+    if param in ("out", "help"):
+        raise BadInput(f"PARAM '{param}' cannot be swept (-out is each run's folder DIR/<param>=<value>, "
+                       "-help lists the options)")
     return {"scene": positional[0], "param": param, "values": positional[2:], "jobs": jobs,
             "out": flags["--out"], "extra": extra}
 
@@ -176,6 +184,8 @@ def check_values(param, values):
     for v in values:
         if not v or any(c in v for c in BAD_VALUE_CHARACTERS) or v in (".", ".."):
             raise BadInput(f"the value '{v}' of -{param} cannot name a folder ({param}={v})")
+        if v.startswith("--"):
+            raise BadInput(f"the value '{v}' of -{param} looks like a flag: flags go to --jobs/--out (JOBS=, OUT=)")
     repeated = sorted({v for v in values if values.count(v) > 1})
     if repeated:
         raise BadInput(f"the value(s) {' '.join(repeated)} of -{param} are given twice (one folder each)")
@@ -354,6 +364,8 @@ def sweep(argv):
         sma.check_option(scene, param)
         fixed = extra_options(scene, param, args["extra"])
         check_values(param, values)
+        for v in values:  # each value against the option's type, before anything runs
+            sma.word(scene, param, v)
     except (BadInput, sma.SceneError) as e:
         print(f"error: {e}", file=sys.stderr)
         return 2
@@ -385,9 +397,28 @@ def sweep(argv):
             except sma.SceneError as e:
                 failures[i] = str(e)
                 print(f"error: -{param} {values[i]}: {e}", file=sys.stderr, flush=True)
+    results = []
+    for i in range(len(values)):
+        if i in failures:
+            continue
+        try:
+            results.append(sma.read(folders[i]))
+        except sma.SceneError as e:
+            failures[i] = str(e)
+            print(f"error: -{param} {values[i]}: {e}", file=sys.stderr, flush=True)
     done = [i for i in range(len(values)) if i not in failures]
-    results = [sma.read(folders[i]) for i in done]
     done_values = [values[i] for i in done]
+    try:
+        return publish(out, scene, param, values, args, fixed, jobs, folders, failures, done, done_values, results)
+    except OSError as e:  # a full disk, a file-size limit: the table or a figure could not be written
+        where = f" {e.filename}" if e.filename else ""
+        print(f"error: the sweep's runs finished, but writing its results failed: cannot write{where}: "
+              f"{e.strerror or e}", file=sys.stderr)
+        return 1
+
+
+def publish(out, scene, param, values, args, fixed, jobs, folders, failures, done, done_values, results):
+    """table.csv, the overlay figures and sweep.json of the finished runs; 0, or 1 when a run failed."""
     header = write_table(os.path.join(out, "table.csv"), param, done_values,
                          [figures_of(r.summary, r.history) for r in results])
 

@@ -169,10 +169,17 @@ inline std::string read_manifest(const fs::path& dir, Manifest& m) {
   return {};
 }
 
-// Whether `name` is the manifest, the lock, or one of their temporary names (the suite's own files).
+// Whether `name` is `prefix` followed by a process id (a temporary name of one run's own).
+inline bool with_pid(const std::string& name, const std::string& prefix) {
+  return name.size() > prefix.size() && name.compare(0, prefix.size(), prefix) == 0 &&
+         name.find_first_not_of("0123456789", prefix.size()) == std::string::npos;
+}
+
+// Whether `name` is the manifest, the lock, or one of their temporary names (the suite's own files;
+// anything else of a similar name is a user's, and makes the folder refused like any other).
 inline bool bookkeeping(const std::string& name) {
-  return name.compare(0, std::strlen(results_marker), results_marker) == 0 ||
-         name.compare(0, std::strlen(results_lock), results_lock) == 0;
+  return name == results_marker || name == results_lock || with_pid(name, std::string(results_lock) + ".stale-") ||
+         with_pid(name, std::string(results_marker) + ".partial-");
 }
 
 // Whether the file `rel` is listed, or is a listed file's unfinished copy (x.csv.partial,
@@ -189,13 +196,14 @@ inline bool covered(const std::vector<std::string>& listed, const std::string& r
   return false;
 }
 
-// What a run of a version before manifests may have left in its folder (the union of the name
-// patterns those versions cleared; a match that is a folder counts whole): a folder with such a
-// version's marker is taken once if it holds nothing else, then gets a manifest.
+// What a run of a version before manifests wrote in its folder (the names those versions' scenes
+// and plot tools write; a match that is a folder counts whole): a folder whose marker is such a
+// version's, of the same scene, is taken once if it holds nothing else, then gets a manifest.
 inline const char* legacy_outputs =
     "summary.json history.csv points.csv contact-final.csv fields.pvd frames fields-* checkpoint.txt "
-    "dc-convergence.csv ring-final.vtu beam-*.vtu pressure-*.csv phase-*.csv pointwise-check.csv *.csv *.png "
-    "*.partial *.partial.vtu *.partial.png seeds.csv failed.txt seed-* run.log kernels.json";
+    "dc-convergence.csv ring-final.vtu beam-*.vtu pressure-*.csv phase-*.csv pointwise-check.csv "
+    "force-temperature.png force-time.png displacement.png iterations.png temperature.png histogram.png "
+    "phase-*.png dc-convergence.png *.partial *.partial.vtu *.partial.png seeds.csv failed.txt seed-* kernels.json";
 
 inline bool legacy_output(const std::string& name) {
   std::istringstream patterns(legacy_outputs);
@@ -235,6 +243,8 @@ inline std::string unlisted_in(const fs::path& root, const Manifest& m, const st
     if (prefix.empty() && bookkeeping(name)) continue;
     const std::string rel = prefix + name;
     const auto type = it->symlink_status(ec).type();
+    // The suite writes no link: one here would make a write or a cut land outside the folder.
+    if (type == fs::file_type::symlink) return why(rel + " (a symbolic link)");
     if (m.legacy) {
       if (!legacy_output(name)) return why(rel);
       continue;
@@ -260,8 +270,9 @@ inline std::string unlisted_in(const fs::path& root, const Manifest& m, const st
 }
 
 // Writes a fresh manifest (header and scene) for `scene` in `dir`, under a temporary name.
-inline std::string write_manifest(const fs::path& dir, const std::string& scene) {
-  const fs::path file = dir / results_marker, partial = dir / (std::string(results_marker) + ".partial");
+inline std::string write_manifest(const fs::path& dir, const std::string& scene, long pid) {
+  const fs::path file = dir / results_marker,
+                 partial = dir / (std::string(results_marker) + ".partial-" + std::to_string(pid));
   {
     std::ofstream out(partial, std::ios::trunc);
     out << manifest_header << "\n" << "scene " << scene << "\n";
@@ -278,6 +289,9 @@ inline std::string write_manifest(const fs::path& dir, const std::string& scene)
 // several processes at once do not mix).
 inline std::string append_manifest(const fs::path& dir, const std::string& entry) {
   const fs::path file = dir / results_marker;
+  if (entry.find_first_of("\n\r") != std::string::npos)
+    return "cannot list '" + entry + "' in " + file.string() + ": a name with a line break (the manifest has a "
+           "name per line): choose a name without one";
   const int fd = open(file.c_str(), O_WRONLY | O_APPEND);
   if (fd < 0) return "cannot add " + entry + " to " + file.string() + ": " + std::strerror(errno);
   const std::string line = entry + "\n";
@@ -358,12 +372,30 @@ inline std::string busy_inside(const fs::path& path, long pid, int depth = 0) {
 // The caller removes the lock with release_results when the run ends, however it ends.
 inline std::string claim_results(const std::string& dir, const std::string& scene, long pid, bool resume = false,
                                  const std::string& patterns = "") {
-  if (auto e = make_directory(dir); !e.empty()) return e;
-  const fs::path d(dir);
   std::error_code ec;
-  if (auto e = foreign_entry(d); !e.empty()) return e;
+  // "a/sub/.." is a: no sub/ made on the way (it would stay behind, unlisted, if refused).
+  const fs::path d = fs::path(dir).lexically_normal();
+  if (d.empty()) return "the empty string is not a directory name";
+  // Listed in the manifest of a results folder around this one (a sweep's run, an ensemble's
+  // seed) before it is made: a claim refused below leaves nothing unlisted in the outer folder.
+  if (!resume) {
+    const fs::path full = fs::absolute(d, ec).lexically_normal();
+    const fs::path self = full.filename().empty() ? full.parent_path() : full;
+    Manifest outer;
+    if (!ec && !self.filename().empty() && read_manifest(self.parent_path(), outer).empty() && outer.present &&
+        !outer.legacy && std::find(outer.entries.begin(), outer.entries.end(), self.filename().string() + "/") ==
+                             outer.entries.end())
+      if (auto e = append_manifest(self.parent_path(), self.filename().string() + "/"); !e.empty()) return e;
+  }
+  if (auto e = make_directory(d.string()); !e.empty()) return e;
   Manifest m;
   if (auto e = read_manifest(d, m); !e.empty()) return e;
+  if (m.legacy && m.scene != scene)
+    return "the output folder " + dir + " holds a marker " + results_marker + " of a version before manifests " +
+           (m.scene.empty() ? std::string("that names no scene") : "of another scene (" + m.scene + ")") +
+           ": it cannot tell this suite's files from yours there; choose another -out, or remove the folder "
+           "yourself if it holds nothing of yours";
+  if (auto e = foreign_entry(d); !e.empty()) return e;
   if (resume && (!m.present || m.legacy || m.scene != scene))
     return "cannot resume " + scene + " in " + dir + ": the folder holds " +
            (m.present && !m.legacy ? "a run of " + m.scene : std::string("no run of this version of the suite"));
@@ -387,7 +419,8 @@ inline std::string claim_results(const std::string& dir, const std::string& scen
     }
     if (process_alive(owner))
       return "the output folder " + dir + " is in use by another run (process " + std::to_string(owner) +
-             ", lock " + lock.string() + "): wait for it or choose another -out";
+             ", lock " + lock.string() + "): wait for it or choose another -out (if no run of this suite is "
+             "going on, the lock is stale: remove it)";
     // A dead run's lock: move it aside under a name of our own, so that of two runs that find
     // the same stale lock only one takes the folder (the O_EXCL create above decides).
     const fs::path aside = d / (std::string(results_lock) + ".stale-" + std::to_string(pid));
@@ -424,17 +457,8 @@ inline std::string claim_results(const std::string& dir, const std::string& scen
     fs::remove_all(path, ec);
     if (ec) return "cannot remove " + path.string() + ": " + reason(ec);
   }
-  if (!resume) {
-    if (auto e = write_manifest(d, scene); !e.empty()) return e;
-    // Listed in the manifest of a results folder around this one (a sweep's run, an ensemble's seed).
-    const fs::path full = fs::absolute(d, ec).lexically_normal();
-    fs::path parent = full.filename().empty() ? full.parent_path().parent_path() : full.parent_path();
-    const std::string name = (full.filename().empty() ? full.parent_path() : full).filename().string();
-    Manifest outer;
-    if (!ec && read_manifest(parent, outer).empty() && outer.present && !outer.legacy &&
-        std::find(outer.entries.begin(), outer.entries.end(), name + "/") == outer.entries.end())
-      if (auto e = append_manifest(parent, name + "/"); !e.empty()) return e;
-  }
+  if (!resume)
+    if (auto e = write_manifest(d, scene, pid); !e.empty()) return e;
   return {};
 }
 
@@ -469,6 +493,7 @@ inline bool ends_with(const std::string& path, const std::string& tail) {
 inline std::string truncate_file(const std::string& path, long long length) {
   if (length < 0) return "cannot cut " + path + " to " + std::to_string(length) + " bytes: a length is >= 0";
   std::error_code ec;
+  if (fs::is_symlink(path, ec)) return "cannot cut " + path + ": it is a symbolic link (the suite writes none)";
   if (!fs::is_regular_file(path, ec)) return "cannot cut " + path + ": no such file";
   const auto size = fs::file_size(path, ec);
   if (ec) return "cannot cut " + path + ": " + reason(ec);

@@ -67,8 +67,10 @@ inline std::string check_msh(const std::string& path, double min_quality) {
       }
       ++node_lines;
       long id;
-      double x, y;
-      if (words >> id >> x >> y) {
+      double x, y, z;
+      std::string extra;
+      // exactly "id x y z": a line with more fields is an edit gmshload would misread as a node
+      if (words >> id >> x >> y >> z && !(words >> extra)) {
         if (!(std::isfinite(x) && std::isfinite(y) && std::fabs(x) < 1e12 && std::fabs(y) < 1e12)) {
           if (!node_bad) { node_bad = id; node_bad_text = line; }
           continue;

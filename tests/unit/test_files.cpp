@@ -295,3 +295,46 @@ TEST(Files, ChecksumAndSealNameAChangedFile) {
   touch(ck, text + "step 22\n");
   EXPECT_NE(files::seal_error(ck).find("no checksum line"), std::string::npos);
 }
+
+// The hostile cases of issue 26's second round: a link in a results folder, a user's file named
+// like the suite's temporary files, an empty or foreign older marker, a line break in a name, a
+// path through a folder that does not exist: refused, nothing touched or left behind.
+TEST(Files, LinksLookalikesAndOddNamesAreRefusedUntouched) {
+  Scratch t;
+  const std::string d = t / "out";
+  std::vector<std::string> known;
+  ASSERT_EQ(files::claim_results(d, "sleeve-radial", getpid()), "");
+  ASSERT_EQ(files::record_result(d + "/history.csv.partial", known), "");
+  touch(t / "users.csv", "mine");
+  fs::create_symlink(t / "users.csv", d + "/history.csv.partial");  // listed name, but a link
+  files::release_results(d, getpid());
+  EXPECT_NE(files::claim_results(d, "sleeve-radial", getpid()).find("symbolic link"), std::string::npos);
+  EXPECT_NE(files::truncate_file(d + "/history.csv.partial", 1).find("symbolic link"), std::string::npos);
+  std::string users;
+  {
+    std::ifstream in(t / "users.csv");
+    in >> users;
+  }
+  EXPECT_EQ(users, "mine");
+  fs::remove(d + "/history.csv.partial");
+  // A user's file that looks like the manifest's temporary name is not the suite's.
+  touch(d + "/.sma-results.partial", "mine");
+  EXPECT_NE(files::claim_results(d, "sleeve-radial", getpid()).find(".sma-results.partial"), std::string::npos);
+  EXPECT_TRUE(fs::exists(d + "/.sma-results.partial"));
+  fs::remove(d + "/.sma-results.partial");
+  // An empty marker (or another scene's old one) among a user's files: refused, files kept.
+  const std::string mine = t / "mine";
+  fs::create_directories(mine);
+  touch(mine + "/.sma-results", "");
+  touch(mine + "/my-measurements.csv", "mine");
+  EXPECT_NE(files::claim_results(mine, "sleeve-radial", getpid()).find("names no scene"), std::string::npos);
+  touch(mine + "/.sma-results", "beam\n");
+  EXPECT_NE(files::claim_results(mine, "sleeve-radial", getpid()).find("another scene (beam)"), std::string::npos);
+  EXPECT_TRUE(fs::exists(mine + "/my-measurements.csv"));
+  // A name with a line break cannot be listed (it would add a forged line).
+  EXPECT_NE(files::claim_results(d + "/sub\nsummary.json", "beam", getpid()).find("line break"), std::string::npos);
+  EXPECT_FALSE(fs::exists(d + "/sub\nsummary.json"));
+  // out/sub/.. is out: no sub/ made on the way.
+  ASSERT_EQ(files::claim_results(d + "/sub/..", "sleeve-radial", getpid()), "");
+  EXPECT_FALSE(fs::exists(d + "/sub"));
+}
