@@ -40,7 +40,8 @@ STATISTICS = {"peak_pressure_mean_Pa": "peak_pressure_mean_Pa",
               "final_pressure_mean_Pa": "final_pressure_mean_Pa",
               "peak_force_N_per_m": "peak_force_N_per_m", "final_force_N_per_m": "final_force_N_per_m",
               "peak_over_final": "peak_over_final", "node_peak_over_final_max": "node_peak_over_final_max",
-              "peak_step": "peak_step", "T_inner_peak_K": "T_inner_peak_K", "T0_local_std_K": "T0_local_std_K"}
+              "peak_step": "peak_step", "T_inner_peak_K": "T_inner_peak_K", "T0_local_std_K": "T0_local_std_K",
+              "austenite_step": "austenite_step", "T_inner_austenite_K": "T_inner_austenite_K"}
 
 
 def environment():
