@@ -35,7 +35,7 @@ def force_temperature(outdir, summary, others):
     for path in others:
         o = read_csv(path)
         curves[os.path.relpath(os.path.dirname(path))] = (o["T_inner_mean"], o["pressure_mean"], o["t"])
-    fig = plt.figure(figsize=(13, 4.8))
+    fig = plt.figure(figsize=(15, 4.8))
     legend, left, right = force_panels(fig, curves, summary, h, [0.0] + h["t"],
                                        state_values(summary, h, "T_inner_mean"), "inner-surface temperature (°C)",
                                        f"{summary['scene']}: clamping pressure against temperature and time")

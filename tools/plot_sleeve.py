@@ -2,9 +2,9 @@
 """Figures of the sleeve scenes (paper Figures 12-36), from results/<scene>/ (docs/outputs.md):
 
   force-temperature.png  left: the contact pressure (MPa) at the three inner-surface points
-                         against each point's own temperature (C), the paper's Fig. 12, 16, 18,
+                         against each point's own temperature (°C), the paper's Fig. 12, 16, 18,
                          22, 26, 30, 34; right: the same pressures against time (s), zoomed on the
-                         transient, the whole run in an inset. Both shaded with the curve's four
+                         transient, the whole run in a narrow panel. Shaded with the curve's four
                          phases (no contact, linear in T, reversion, austenite); curves that
                          coincide share one legend entry with their measured largest difference
   displacement.png       the inner surface at the three instants: radial displacement (um)
@@ -168,12 +168,18 @@ def zoom_end(summary, t_end):
 
 
 def force_panels(fig, curves, summary, history, t_state, T_state, xlabel, title):
-    """Left: pressure against temperature; right: against time, zoomed on the transient, the whole
-    run in an inset. curves: {label: (T in K, p in Pa, t in s)}; history, t_state, T_state: the
-    run whose phases are shaded. Returns the legend labels and the two axes."""
+    """Left: pressure against temperature; middle: against time, zoomed on the transient; right
+    (when the zoom cuts the run), the whole run in a narrow panel of its own (an inset covered the
+    rise of a slower run). curves: {label: (T in K, p in Pa, t in s)}; history, t_state, T_state:
+    the run whose phases are shaded. Returns the legend labels and the two main axes."""
     spans = phase_spans(summary, history)
     groups = coincident_groups({k: (c[0], c[1]) for k, c in curves.items()})
-    left, right = fig.subplots(1, 2, gridspec_kw={"width_ratios": [1, 1]})
+    t_end = t_state[-1]
+    t_zoom = zoom_end(summary, t_end)
+    if t_zoom < t_end:
+        left, right, whole = fig.subplots(1, 3, gridspec_kw={"width_ratios": [1, 1, 0.4]})
+    else:
+        (left, right), whole = fig.subplots(1, 2, gridspec_kw={"width_ratios": [1, 1]}), None
     shade(left, spans, [celsius(T) for T in T_state])
     shade(right, spans, t_state)
     colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
@@ -191,8 +197,6 @@ def force_panels(fig, curves, summary, history, t_state, T_state, xlabel, title)
     handles, names = left.get_legend_handles_labels()
     curve_handles = [(h, n) for h, n in zip(handles, names) if n not in {p[0] for p in PHASES}]
     left.legend(*zip(*curve_handles), fontsize=7, loc="lower right")
-    t_end = t_state[-1]
-    t_zoom = zoom_end(summary, t_end)
     right.set_xlim(0, t_zoom)
     right.set_xlabel("time t (s)")
     right.set_ylabel("contact pressure (MPa)")
@@ -200,16 +204,14 @@ def force_panels(fig, curves, summary, history, t_state, T_state, xlabel, title)
     right.grid(alpha=0.3)
     handles, names = right.get_legend_handles_labels()
     right.legend(handles, names, fontsize=7, loc="upper left", title="phases", title_fontsize=7)
-    if t_zoom < t_end:
-        inset = right.inset_axes([0.64, 0.07, 0.33, 0.3])
+    if whole is not None:
         for k, (label, members) in enumerate(groups):
             T, p, t = curves[members[0]]
-            inset.plot(t, [v / 1e6 for v in p], lw=0.8, color=colours[k % len(colours)])
-        inset.axvspan(0, t_zoom, color="0.85", lw=0, zorder=0)
-        inset.set_title("whole run (zoom shaded)", fontsize=6)
-        inset.set_xlabel("t (s)", fontsize=6, labelpad=1)
-        inset.set_ylabel("MPa", fontsize=6, labelpad=1)
-        inset.tick_params(labelsize=6, pad=1)
+            whole.plot(t, [v / 1e6 for v in p], lw=0.8, color=colours[k % len(colours)])
+        whole.axvspan(0, t_zoom, color="0.85", lw=0, zorder=0)
+        whole.set_title("the whole run (middle panel's span shaded)", fontsize=8)
+        whole.set_xlabel("time t (s)")
+        whole.grid(alpha=0.3)
     fig.suptitle(title)
     return [g[0] for g in groups], left, right
 
@@ -220,7 +222,7 @@ def force_temperature(outdir, summary):
     names = [k[len("pressure_"):-len("_Pa")] for k in p if k.startswith("pressure_")]
     labels = point_labels(summary, names)
     curves = {labels[n]: (p[f"T_{n}_K"], p[f"pressure_{n}_Pa"], p["t"]) for n in names}
-    fig = plt.figure(figsize=(13, 4.8))
+    fig = plt.figure(figsize=(15, 4.8))
     legend, _, _ = force_panels(fig, curves, summary, h, [0.0] + h["t"], state_values(summary, h, "T_inner_mean"),
                           "temperature of the point: the inner-surface node at the curve's angle (°C)",
                           f"{summary['scene']}: contact pressure at three inner-surface points "
