@@ -146,7 +146,13 @@ def points(out):
 
 
 def C(TK):
-    return TK - 273.15
+    """Celsius of a temperature in K; nan for an event that did not happen (summary.json's null)."""
+    return float("nan") if TK is None else TK - 273.15
+
+
+def step_or_never(step):
+    """A summary.json event step, or -1 (this tool's 'never') where it is null."""
+    return -1 if step is None else step
 
 
 def curve(out):
@@ -154,14 +160,14 @@ def curve(out):
     h, s = hist(out), summ(out)
     fa = h["fraction_austenite"]
     base = fa[1:10].min()                       # after the first transformation to martensite
-    contact = s["first_contact_step"]
+    contact = step_or_never(s["first_contact_step"])
     on = np.nonzero((fa > base + 1e-4) & (h["step"] >= 3))[0]
     onset = int(h["step"][on[0]]) if len(on) else -1
-    aus = s["austenite_step"]
+    aus = step_or_never(s["austenite_step"])
     p = h["pressure_mean"]
     pf = s["final_pressure_mean"]
     r = dict(first_contact_step=contact, T_contact_C=C(s["T_inner_first_contact"]),
-             zero_steps=contact - 1, onset_step=onset,
+             zero_steps=contact - 1 if contact > 0 else float("nan"), onset_step=onset,
              T_onset_C=C(h["T_inner_mean"][onset - 1]) if onset > 0 else float("nan"),
              austenite_step=aus, T_austenite_C=C(s["T_inner_austenite"]),
              linear_steps=(onset - contact) if onset > 0 and contact > 0 else 0,
