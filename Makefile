@@ -28,6 +28,8 @@ PLUGIN_SOURCES := plugin/sma.cpp $(wildcard plugin/core/*.hpp)
 FASTCLOCK := plugin/build/fastclock.so
 # The results folder's claim for the Python tools (a sweep's folder): plugin/results_tool.cpp.
 RESULTS_TOOL := plugin/build/sma-results
+# Out of memory ends a run with one error line (exit 12), preloaded by tools/ff (plugin/oomguard.c says why).
+OOMGUARD := plugin/build/oomguard.so
 
 # gmsh meshes (MSH 2.2: FreeFEM's gmshload does not read MSH 4): meshes/<geo>-<level>.msh is
 # made from meshes/<geo>.geo with the gmsh options <geo>_opt_<level> (the .geo files say why).
@@ -90,13 +92,16 @@ FIGURE_SCENES := beam sleeve-circular sleeve-circular-single sleeve-circular-gva
 deps:
 	@tools/install-deps.sh
 
-plugin: deps $(PLUGIN) $(FASTCLOCK) $(RESULTS_TOOL)
+plugin: deps $(PLUGIN) $(FASTCLOCK) $(RESULTS_TOOL) $(OOMGUARD)
 $(RESULTS_TOOL): plugin/results_tool.cpp plugin/core/files.hpp
 	@mkdir -p plugin/build
 	@g++ -std=c++17 -O2 -Wall -Werror plugin/results_tool.cpp -o $@
 $(FASTCLOCK): plugin/fastclock.c
 	@mkdir -p plugin/build
 	@cc -O2 -shared -fPIC -Wall -Werror plugin/fastclock.c -o $@
+$(OOMGUARD): plugin/oomguard.c
+	@mkdir -p plugin/build
+	@cc -O2 -shared -fPIC -Wall -Werror plugin/oomguard.c -o $@
 $(PLUGIN): $(PLUGIN_SOURCES)
 	@mkdir -p plugin/build
 	@cd plugin/build && ff-c++ CXX=../../tools/cxx17 ../sma.cpp -I/usr/include/eigen3 -I.. > build.log 2>&1 \

@@ -90,13 +90,16 @@
 #include <cerrno>
 #include <cmath>
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <fstream>
 #include <memory>
+#include <new>
 #include <sstream>
 #include <string>
+#include <sys/resource.h>
 #include <unistd.h>
 #include <vector>
 
@@ -122,10 +125,26 @@ sma::span<const double> cview(KN<double>* a) {
   return {a->N() ? &(*a)[0] : nullptr, (std::size_t)a->N()};
 }
 
+// Eigen throws std::bad_alloc when malloc fails (FreeFEM's own operator new returns null
+// instead). Under tools/ff plugin/oomguard.c ends the run before either; run without it, a failed
+// allocation in the plugin still ends in one line and exit 12, not in FreeFEM's Exec error.
+[[noreturn]] void OutOfMemory(const char* name) {
+  struct rlimit as;
+  if (getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY)
+    std::fprintf(stderr, "error: out of memory in %s under the address-space limit (ulimit -v %llu kB): "
+                 "raise it, or use a coarser mesh\n", name, (unsigned long long)as.rlim_cur / 1024);
+  else
+    std::fprintf(stderr, "error: out of memory in %s (the machine's memory is used up): free some, or "
+                 "use a coarser mesh\n", name);
+  std::exit(12);
+}
+
 template <class F>
 auto guarded(const char* name, F f) -> decltype(f()) {
   try {
     return f();
+  } catch (const std::bad_alloc&) {
+    OutOfMemory(name);
   } catch (const std::exception& e) {
     ExecError((std::string(name) + ": " + e.what()).c_str());
   }

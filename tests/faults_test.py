@@ -17,6 +17,12 @@ plugin/core/files.hpp).
 5. Names with shell syntax: -out and -mesh with a quote, double quotes, spaces, a semicolon,
    $(...), backquotes and UTF-8 run normally; summary.json is valid JSON and holds the mesh path
    exactly; no command in them ran.
+6. Out of memory: sleeve-circular, sleeve-radial and beam at their defaults under address-space
+   limits (RLIMIT_AS, as `ulimit -v`) from 60 to 400 MB. Each run ends within the timeout, either
+   with exit 0 and complete files, or with a non-zero exit and one `error:` line that says out of
+   memory and names the limit (before: 100-230 MB wrote the results and never exited, in
+   OpenBLAS's thread shutdown; 92-100 MB an exit 1 without an error line, a segmentation fault or
+   an exec error called a bug). At least one limit fails and the largest completes, per scene.
 Writes results/checks/faults.json.
 """
 import json
@@ -256,6 +262,67 @@ def second_scene(tmp, measured):
     measured["second_scene"] = {"entries": left, "expected": expected}
 
 
+# Address-space limits in kB (ulimit -v): below what FreeFEM's libraries need, the start-up, the
+# plugin's first arrays, OpenBLAS's 128 MB buffer (beam's UMFPACK solves), and enough.
+MEMORY_LIMITS_KB = (60000, 92000, 96000, 100000, 150000, 200000, 250000, 400000)
+MEMORY_SCENES = (("sleeve-circular", 1500), ("sleeve-radial", None), ("beam", None))
+
+
+def under_memory_limit(scene, out, limit_kb, timeout=60):
+    """Runs a scene at its defaults under RLIMIT_AS = limit_kb kB; kills its process group when it
+    outlives the timeout (a FreeFEM stuck at exit would stay behind tools/ff otherwise)."""
+    def preexec():
+        resource.setrlimit(resource.RLIMIT_AS, (limit_kb * 1024, limit_kb * 1024))
+    start = time.time()
+    p = subprocess.Popen([FF, os.path.join(ROOT, "edp", "scenes", scene + ".edp"), "-quiet", "1", "-out", out],
+                         cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                         preexec_fn=preexec, start_new_session=True)
+    try:
+        stdout, stderr = p.communicate(timeout=timeout)
+        code = p.returncode
+    except subprocess.TimeoutExpired:
+        os.killpg(p.pid, signal.SIGKILL)
+        stdout, stderr = p.communicate()
+        code = None
+    return code, stdout + stderr, time.time() - start
+
+
+def memory(tmp, measured):
+    outcomes = []
+    for scene, steps in MEMORY_SCENES:
+        ends = []
+        for limit_kb in MEMORY_LIMITS_KB:
+            out = os.path.join(tmp, f"memory-{scene}-{limit_kb}")
+            code, output, seconds = under_memory_limit(scene, out, limit_kb)
+            errors = [ln for ln in output.splitlines() if ln.startswith("error:")]
+            label = f"{scene} under ulimit -v {limit_kb}"
+            if code == 0:
+                if steps:
+                    why = complete(out, steps)
+                else:
+                    try:
+                        json.load(open(os.path.join(out, "summary.json")))
+                        why = ""
+                    except (OSError, ValueError) as e:
+                        why = f"summary.json: {e}"
+                check(why == "" and not errors, f"{label}: exit 0 and complete files{': ' + why if why else ''} "
+                      f"({seconds:.1f} s)")
+                outcome = "complete"
+            else:
+                clean = (code is not None and len(errors) == 1 and "out of memory" in errors[0]
+                         and f"(ulimit -v {limit_kb} kB)" in errors[0])
+                check(clean, f"{label}: " + ("no end within 60 s" if code is None else f"exit {code}") +
+                      f", one 'error:' line saying out of memory under that limit ({errors[:2] or output[-300:]})")
+                outcome = errors[0] if errors else ("timeout" if code is None else f"exit {code}")
+            ends.append(outcome)
+            outcomes.append({"scene": scene, "limit_kb": limit_kb, "exit": code, "seconds": round(seconds, 2),
+                             "outcome": outcome})
+        check(ends[-1] == "complete" and any(e != "complete" for e in ends),
+              f"{scene}: {sum(e != 'complete' for e in ends)} of {len(ends)} limits failed cleanly, "
+              f"the largest ({MEMORY_LIMITS_KB[-1]} kB) completed")
+    measured["memory"] = outcomes
+
+
 def shell_syntax(tmp, measured):
     name = "it's a \"dir\"; touch PWNED $(touch PWNED) `touch PWNED` r\u00e9sultats \u2713"
     folder = os.path.join(tmp, name)
@@ -291,6 +358,7 @@ def main():
         foreign(tmp, measured)
         second_scene(tmp, measured)
         shell_syntax(tmp, measured)
+        memory(tmp, measured)
     record("faults", {"test": "faults", **measured})
     finish()
 
