@@ -53,9 +53,12 @@ def _forward(signum, frame):
 
 
 def install():
-    """Forward TERM, INT and HUP to the running children (call once, from the main thread)."""
+    """Forward TERM, INT and HUP to the running children (call once, from the main thread); and
+    take a TERM when this process's own parent dies (make killed outright: this tool would run on,
+    re-parented, with its children)."""
     for s in (signal.SIGTERM, signal.SIGINT, signal.SIGHUP):
         signal.signal(s, _forward)
+    _die_with_parent()
 
 
 def run(args, **kwargs):

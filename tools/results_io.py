@@ -72,9 +72,24 @@ def read_json(path):
     """The object of a JSON file (a summary.json): a dict, or a ResultsError naming the file."""
     def no_constant(word):  # NaN, Infinity: no JSON the scenes write holds them
         raise ValueError(f"'{word}' is not a JSON number")
+
+    def no_repeat(pairs):  # a key given twice: json keeps the last one without a word
+        keys = [k for k, _ in pairs]
+        repeated = sorted({k for k in keys if keys.count(k) > 1})
+        if repeated:
+            raise ValueError(f"the key {repeated[0]!r} is given twice")
+        return dict(pairs)
+
+    def no_huge(text):  # an integer beyond a double is no value the scenes write
+        value = int(text)
+        if abs(value) > 1.7976931348623157e308:
+            raise ValueError(f"the number {text[:20]}... is beyond a double")
+        return value
+    if os.path.exists(path) and not os.path.isfile(path) and not os.path.isdir(path):
+        raise ResultsError(f"{path} is not a regular file (a device or a pipe), not the run's file")
     try:
         with open(path, encoding="utf-8") as f:
-            value = json.load(f, parse_constant=no_constant)
+            value = json.load(f, parse_constant=no_constant, object_pairs_hook=no_repeat, parse_int=no_huge)
     except FileNotFoundError:
         raise ResultsError(f"{path} is missing (the run did not finish, or wrote elsewhere)") from None
     except IsADirectoryError:
@@ -94,6 +109,8 @@ def read_csv(path, skip_comment=True):
     """{column: [float]} of a CSV with a header line (`#` lines skipped): every row must have the
     header's number of fields, every field a finite or nan number; else a ResultsError naming the
     file, its line and its column."""
+    if os.path.exists(path) and not os.path.isfile(path) and not os.path.isdir(path):
+        raise ResultsError(f"{path} is not a regular file (a device or a pipe), not the run's file")
     try:
         # utf-8-sig: a byte-order mark (an editor's) is not part of the first column's name
         with open(path, newline="", encoding="utf-8-sig") as f:
@@ -109,6 +126,9 @@ def read_csv(path, skip_comment=True):
     if not lines:
         raise ResultsError(f"{path} has no header line")
     header = next(csv.reader([lines[0][1]]))
+    repeated = sorted({name for name in header if header.count(name) > 1})
+    if repeated:
+        raise ResultsError(f"{path}: the column {repeated[0]} is named twice in the header (an edited file?)")
     rows = []
     for number, line in lines[1:]:
         if not line.strip():

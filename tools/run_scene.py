@@ -49,6 +49,9 @@ def main(argv):
     script, default_out, plot = argv[0], argv[1], argv[2:]
     launcher = words_of("RUN_LAUNCHER") or [os.path.join(ROOT, "tools", "ff")]
     user = words_of("RUN_ARGS")
+    if "RUN_OUT" in os.environ and (not os.environ["RUN_OUT"].strip() or os.environ["RUN_OUT"].startswith("-")):
+        print(f"error: OUT='{os.environ['RUN_OUT']}' is not a folder name (empty, or an option)", file=sys.stderr)
+        return 2
     words = words_of("RUN_FIXED") + (["-out", os.environ["RUN_OUT"]] if os.environ.get("RUN_OUT") else []) + user
     # No shell ever sees these words, so nothing expands `~`: a folder named ~ would be made here.
     home = [w for w in words if w == "~" or w.startswith("~/")]

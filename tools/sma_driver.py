@@ -174,6 +174,8 @@ def folder(out):
     path = os.fspath(out)
     if not isinstance(path, str) or path == "" or any(c in path for c in "\n\r\0"):
         raise SceneError(f"the output folder {out!r} is not a usable path (empty, bytes, or with a line break)")
+    if path == "~" or path.startswith("~/"):
+        raise SceneError(f"the output folder {path!r}: ~ is not expanded here; give os.path.expanduser({path!r})")
     return path
 
 

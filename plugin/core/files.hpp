@@ -122,6 +122,8 @@ inline bool process_alive(long pid) {
 
 // The process id written in a lock file, or 0.
 inline long lock_owner(const fs::path& lock) {
+  std::error_code ec;
+  if (!fs::is_regular_file(fs::symlink_status(lock, ec))) return 0;  // a FIFO would block the read
   std::ifstream in(lock);
   long pid = 0;
   in >> pid;
@@ -146,7 +148,12 @@ inline std::string read_manifest(const fs::path& dir, Manifest& m) {
     return file.string() + " is not a file (a results folder's manifest is a text file)";
   std::ifstream in(file);
   std::string line;
-  if (!std::getline(in, line)) {  // empty: an older marker, which lists nothing
+  auto next = [&](std::string& text) {  // a line, without the \r of a file saved with CRLF
+    if (!std::getline(in, text)) return false;
+    if (!text.empty() && text.back() == '\r') text.pop_back();
+    return true;
+  };
+  if (!next(line)) {  // empty: an older marker, which lists nothing
     m.legacy = true;
     return {};
   }
@@ -155,10 +162,10 @@ inline std::string read_manifest(const fs::path& dir, Manifest& m) {
     m.scene = line;
     return {};
   }
-  if (!std::getline(in, line) || line.compare(0, 6, "scene ") != 0)
+  if (!next(line) || line.compare(0, 6, "scene ") != 0)
     return file.string() + " is damaged: its second line is not 'scene <name>'";
   m.scene = line.substr(6);
-  for (int number = 3; std::getline(in, line); ++number) {
+  for (int number = 3; next(line); ++number) {
     const fs::path entry(line);
     bool bad = line.empty() || entry.is_absolute();
     for (const auto& part : entry) bad = bad || part == ".." || part == ".";
@@ -370,10 +377,24 @@ inline std::string busy_inside(const fs::path& path, long pid, int depth = 0) {
 //    entries matching the shell patterns of `patterns` (what its remaining steps rewrite);
 //  - a folder inside another results folder is listed in that one's manifest as `name/`.
 // The caller removes the lock with release_results when the run ends, however it ends.
+inline std::string claim_locked(const fs::path& d, const std::string& dir, const std::string& scene, long pid,
+                                bool resume, const std::string& patterns);
+inline void release_results(const std::string& dir, long pid);
+
 inline std::string claim_results(const std::string& dir, const std::string& scene, long pid, bool resume = false,
                                  const std::string& patterns = "") {
   std::error_code ec;
-  // "a/sub/.." is a: no sub/ made on the way (it would stay behind, unlisted, if refused).
+  // "a/sub/.." goes down into sub and back: the scripts write through the name as given, so sub
+  // would have to exist; the folder is asked for as itself (a leading ../ is fine).
+  bool down = false;
+  for (const auto& part : fs::path(dir)) {
+    if (part == "..") {
+      if (down) return "-out " + dir + " goes into a folder and back out ('..' after a name): give the folder "
+                       "itself, " + fs::path(dir).lexically_normal().string();
+    } else if (part != "." && !part.empty()) {
+      down = true;
+    }
+  }
   const fs::path d = fs::path(dir).lexically_normal();
   if (d.empty()) return "the empty string is not a directory name";
   // Listed in the manifest of a results folder around this one (a sweep's run, an ensemble's
@@ -412,6 +433,8 @@ inline std::string claim_results(const std::string& dir, const std::string& scen
       break;
     }
     if (errno != EEXIST) return "cannot create the lock " + lock.string() + ": " + std::strerror(errno);
+    if (!fs::is_regular_file(fs::symlink_status(lock, ec)))
+      return "the lock " + lock.string() + " is not a file (the suite writes a file there): remove it";
     const long owner = lock_owner(lock);
     if (owner == pid) {
       taken = true;
@@ -428,6 +451,21 @@ inline std::string claim_results(const std::string& dir, const std::string& scen
     fs::remove(aside, ec);
   }
   if (!taken) return "cannot take the lock " + lock.string() + " (another run keeps taking it)";
+  // A claim that fails from here gives the folder back as it found it: its lock and its unfinished
+  // manifest go (a disk full while writing it left both, and every later run was refused).
+  std::string error = claim_locked(d, dir, scene, pid, resume, patterns);
+  if (!error.empty()) {
+    fs::remove(d / (std::string(results_marker) + ".partial-" + std::to_string(pid)), ec);
+    release_results(d.string(), pid);
+  }
+  return error;
+}
+
+// The part of claim_results done under the folder's lock.
+inline std::string claim_locked(const fs::path& d, const std::string& dir, const std::string& scene, long pid,
+                                bool resume, const std::string& patterns) {
+  std::error_code ec;
+  Manifest m;
   // Under the lock: the folder as it is now (a run that held it may have added entries).
   if (auto e = foreign_entry(d); !e.empty()) return e;
   if (auto e = read_manifest(d, m); !e.empty()) return e;
@@ -449,8 +487,6 @@ inline std::string claim_results(const std::string& dir, const std::string& scen
     doomed.push_back(it->path());  // foreign_entry found every entry to be the manifest's
   }
   if (ec) return "cannot list " + dir + ": " + reason(ec);
-  for (const auto& path : doomed)
-    if (auto e = busy_inside(path, pid); !e.empty()) return e;
   for (const auto& path : doomed)
     if (auto e = busy_inside(path, pid); !e.empty()) return e;
   for (const auto& path : doomed) {
@@ -494,6 +530,9 @@ inline std::string truncate_file(const std::string& path, long long length) {
   if (length < 0) return "cannot cut " + path + " to " + std::to_string(length) + " bytes: a length is >= 0";
   std::error_code ec;
   if (fs::is_symlink(path, ec)) return "cannot cut " + path + ": it is a symbolic link (the suite writes none)";
+  // A file with another name elsewhere (a hard link) would be cut and continued there too.
+  if (fs::hard_link_count(path, ec) > 1)
+    return "cannot cut " + path + ": it has another name (a hard link): the suite's files have one; copy it instead";
   if (!fs::is_regular_file(path, ec)) return "cannot cut " + path + ": no such file";
   const auto size = fs::file_size(path, ec);
   if (ec) return "cannot cut " + path + ": " + reason(ec);

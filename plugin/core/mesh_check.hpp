@@ -7,7 +7,9 @@
 // edge lengths), 1 for an equilateral triangle, 0 for a degenerate one.
 // Returns "" when the mesh passes, else one sentence naming the file and the first fault.
 #pragma once
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -16,6 +18,7 @@
 #include <array>
 #include <map>
 #include <unordered_map>
+#include <vector>
 
 namespace sma::mesh {
 
@@ -46,10 +49,18 @@ inline std::string check_msh(const std::string& path, double min_quality) {
   std::string node_bad_text;
   std::map<std::array<long, 3>, long> seen_triangles;
   long triangle_twice = 0, triangle_first = 0;
+  // An element line must be "id type ntags tag... nodes" of a 2D type with exactly its fields: a
+  // tag count of 2^31 - 1 made gmshload read for ever, a tetrahedron ended in a bare message.
+  long element_bad = 0;
+  std::string element_bad_text, element_bad_why;
   double worst_x = 0, worst_y = 0, min_x = 0, min_y = 0;
   enum { none, format, nodes, elems } section = none;
+  bool first_line = true;
   while (std::getline(in, line)) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (first_line && line.rfind("\xEF\xBB\xBF", 0) == 0)
+      return name + " begins with a byte-order mark (an editor's): gmshload reads plain ASCII MSH 2.2; save it without";
+    first_line = false;
     if (line.rfind("$MeshFormat", 0) == 0) { section = format; continue; }
     if (line.rfind("$Nodes", 0) == 0) { section = nodes; continue; }
     if (line.rfind("$Elements", 0) == 0) { section = elems; saw_elements = true; declared = -1; continue; }
@@ -82,13 +93,35 @@ inline std::string check_msh(const std::string& path, double min_quality) {
         node_bad_text = line;
       }
     } else if (section == elems) {
-      if (declared < 0) { words >> declared; continue; }
+      if (declared < 0) {
+        if (!(words >> declared) || declared < 0) declared = -2;
+        continue;
+      }
       ++elements;
-      long id, type, ntags;
-      if (!(words >> id >> type >> ntags) || type != 2) continue;
-      long tag, v[3];
-      for (long k = 0; k < ntags; ++k) words >> tag;
-      if (!(words >> v[0] >> v[1] >> v[2])) continue;
+      std::vector<std::string> f;
+      for (std::string w; words >> w;) f.push_back(w);
+      auto whole = [](const std::string& w, long& out) {
+        char* end = nullptr;
+        errno = 0;
+        out = std::strtol(w.c_str(), &end, 10);
+        return !w.empty() && *end == '\0' && errno == 0;
+      };
+      long id = 0, type = 0, ntags = 0;
+      const long corners = f.size() >= 2 && whole(f[1], type) ? (type == 15 ? 1 : type == 1 ? 2 : type == 2 ? 3 : 0) : 0;
+      if (f.size() < 3 || !whole(f[0], id) || !whole(f[2], ntags) || ntags < 0 ||
+          corners == 0 || (long)f.size() != 3 + ntags + corners) {
+        if (!element_bad) {
+          element_bad = elements;
+          element_bad_text = line;
+          element_bad_why = corners == 0 && f.size() >= 2
+                                ? "its type " + f[1] + " is not a point (15), a line (1) or a triangle (2) of a 2D mesh"
+                                : "it is not 'id type ntags', the tags and the element's nodes";
+        }
+        continue;
+      }
+      if (type != 2) continue;
+      long v[3];
+      if (!whole(f[3 + ntags], v[0]) || !whole(f[4 + ntags], v[1]) || !whole(f[5 + ntags], v[2])) continue;
       std::array<long, 3> key{v[0], v[1], v[2]};
       std::sort(key.begin(), key.end());
       const auto [where, fresh] = seen_triangles.emplace(key, id);
@@ -119,6 +152,7 @@ inline std::string check_msh(const std::string& path, double min_quality) {
   const double v = std::atof(version.c_str());
   if (v >= 3 || v < 2) return name + " is MSH " + version + ": FreeFEM's gmshload reads MSH 2.2 only (gmsh -format msh22)";
   if (binary != "0") return name + " is a binary MSH file: gmshload reads ASCII MSH 2.2 (gmsh -format msh22 without -bin)";
+  if (declared == -2) return name + ": its $Elements section does not start with a count of elements >= 0";
   if (!saw_elements || declared < 0)
     return name + " is cut off before its elements (an interrupted gmsh or copy? run 'make meshes')";
   if (!end_elements || elements != declared)
@@ -132,6 +166,9 @@ inline std::string check_msh(const std::string& path, double min_quality) {
     return name + " declares " + std::to_string(nodes_declared) + " nodes and lists " + std::to_string(node_lines) +
            " (a cut or edited file? run 'make meshes')";
   if (node_twice) return name + ": node " + std::to_string(node_twice) + " is defined twice";
+  if (element_bad)
+    return name + ": element line " + std::to_string(element_bad) + " of $Elements ('" + element_bad_text.substr(0, 80) +
+           "'): " + element_bad_why;
   if (missing) return name + ": triangle " + std::to_string(missing) + " uses a node the file does not define";
   if (triangle_twice)
     return name + ": triangle " + std::to_string(triangle_twice) + " repeats triangle " + std::to_string(triangle_first) +

@@ -3,6 +3,7 @@
 // and a dead run's lock is taken.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -334,7 +335,26 @@ TEST(Files, LinksLookalikesAndOddNamesAreRefusedUntouched) {
   // A name with a line break cannot be listed (it would add a forged line).
   EXPECT_NE(files::claim_results(d + "/sub\nsummary.json", "beam", getpid()).find("line break"), std::string::npos);
   EXPECT_FALSE(fs::exists(d + "/sub\nsummary.json"));
-  // out/sub/.. is out: no sub/ made on the way.
-  ASSERT_EQ(files::claim_results(d + "/sub/..", "sleeve-radial", getpid()), "");
+  // out/sub/.. goes into sub and back: refused (the scripts would write through sub), none made.
+  EXPECT_NE(files::claim_results(d + "/sub/..", "sleeve-radial", getpid()).find("and back out"), std::string::npos);
   EXPECT_FALSE(fs::exists(d + "/sub"));
+  // A lock that is a FIFO is named at once (reading it blocked for ever).
+  ASSERT_EQ(mkfifo((d + "/.sma-lock").c_str(), 0644), 0);
+  EXPECT_NE(files::claim_results(d, "sleeve-radial", getpid()).find("is not a file"), std::string::npos);
+  fs::remove(d + "/.sma-lock");
+  // A file with a second name elsewhere (a hard link) is not cut (nor continued) in place.
+  touch(d + "/history.csv.partial", "step\n1\n2\n");
+  fs::create_hard_link(d + "/history.csv.partial", t / "users-copy.csv");
+  EXPECT_NE(files::truncate_file(d + "/history.csv.partial", 5).find("hard link"), std::string::npos);
+  EXPECT_EQ(fs::file_size(t / "users-copy.csv"), 9u);  // untouched
+  // A manifest saved with CRLF line ends reads as the same manifest.
+  const std::string crlf = t / "crlf";
+  fs::create_directories(crlf);
+  touch(crlf + "/.sma-results", "sma-results manifest 1\r\nscene beam\r\nsummary.json\r\n");
+  touch(crlf + "/summary.json");
+  files::Manifest m;
+  ASSERT_EQ(files::read_manifest(crlf, m), "");
+  EXPECT_FALSE(m.legacy);
+  EXPECT_EQ(m.scene, "beam");
+  EXPECT_EQ(m.entries, std::vector<std::string>{"summary.json"});
 }
