@@ -193,6 +193,11 @@ def main():
     bad = fresh_pngs(radial, radial_pngs, since)
     check(code == 0 and not bad, f"plot_sleeve-radial.py exit {code}, wrote {len(radial_pngs) - len(bad)} of "
           f"{len(radial_pngs)} PNGs (missing or stale: {bad})" + ("" if code == 0 else "\n" + output))
+    # The 2D model's tool on a radial run names the radial one instead of a missing points.csv.
+    code, output = plot("plot_sleeve.py", radial)
+    errors = [ln for ln in output.splitlines() if ln.startswith("error:")]
+    check(code == 1 and len(errors) == 1 and "plot_sleeve-radial.py" in errors[0] and "Traceback" not in output,
+          f"plot_sleeve.py on a sleeve-radial run: exit {code}, {errors[:1]}")
 
     # ---- Damaged results: one error line naming the file, exit 1, never a traceback ----
     damaged = os.path.join(TEST_RESULTS, "plots-damaged")

@@ -16,6 +16,7 @@ nothing is drawn. Exit: the run's exit code, else the plot's.
 """
 import os
 import shlex
+import shutil
 import sys
 
 import children
@@ -48,6 +49,13 @@ def main(argv):
         return 2
     script, default_out, plot = argv[0], argv[1], argv[2:]
     launcher = words_of("RUN_LAUNCHER") or [os.path.join(ROOT, "tools", "ff")]
+    # The programs the launcher starts, named before anything runs (mpiexec's own message for a
+    # missing FreeFem++-mpi is OpenMPI's, exit 134).
+    missing = [w for w in launcher if w in ("mpiexec", "FreeFem++-mpi") and shutil.which(w) is None]
+    if missing:
+        print(f"error: {missing[0]} is not installed (or not on PATH): run 'make deps' (Debian's freefem++ "
+              "and openmpi)", file=sys.stderr)
+        return 3
     user = words_of("RUN_ARGS")
     if "RUN_OUT" in os.environ and (not os.environ["RUN_OUT"].strip() or os.environ["RUN_OUT"].startswith("-")):
         print(f"error: OUT='{os.environ['RUN_OUT']}' is not a folder name (empty, or an option)", file=sys.stderr)
