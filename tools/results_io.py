@@ -149,7 +149,13 @@ def read_csv(path, skip_comment=True):
         rows.append(row)
     if not rows:
         raise ResultsError(f"{path} has no data rows")
-    return {name: [r[k] for r in rows] for k, name in enumerate(header)}
+    columns = {name: [r[k] for r in rows] for k, name in enumerate(header)}
+    # The step and the time index every row: a nan there (a value a field may hold) is damage.
+    for name in ("step", "t"):
+        bad = next((i for i, v in enumerate(columns.get(name, [])) if math.isnan(v)), None)
+        if bad is not None:
+            raise ResultsError(f"{path}: data row {bad + 1}, column {name}: nan is not a {name} (a damaged file)")
+    return columns
 
 
 def guard(main):
