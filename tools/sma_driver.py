@@ -10,7 +10,8 @@ options(scene) lists a scene's options as the scene itself prints them (`-help t
 tools/param_reference.py, the one parser of that format); run() refuses an unknown name before
 starting FreeFEM, naming close matches; every run goes through tools/ff as an argument list, never
 through a shell, from the repository root (the scenes' mesh paths are relative to it: a relative
-`out` is relative to the root too). Standard library and numpy only.
+`out` is relative to the root too, in run() and read() alike; run() returns the absolute path).
+Standard library and numpy only.
 """
 import difflib
 import math
@@ -167,7 +168,9 @@ def command(scene, out, **values):
 
 
 def folder(out):
-    """`out` as a path: a str or an os.PathLike (pathlib), not empty; anything else (None, bytes,
+    """`out` as an absolute path: a str or an os.PathLike (pathlib), not empty, a relative one
+    taken from the repository root (where the scenes run: run() and read() alike, so that
+    read(run(...)) works from any directory, a notebook's included); anything else (None, bytes,
     a number) is refused rather than turned into a folder named "None" or "b'...'"."""
     if not isinstance(out, (str, os.PathLike)) or isinstance(out, bytes):
         raise SceneError(f"the output folder {out!r} is not a path (a str or a pathlib.Path)")
@@ -176,7 +179,7 @@ def folder(out):
         raise SceneError(f"the output folder {out!r} is not a usable path (empty, bytes, or with a line break)")
     if path == "~" or path.startswith("~/"):
         raise SceneError(f"the output folder {path!r}: ~ is not expanded here; give os.path.expanduser({path!r})")
-    return path
+    return os.path.normpath(os.path.join(ROOT, path))
 
 
 def run(scene, out, quiet=True, **values):
@@ -194,10 +197,10 @@ def run(scene, out, quiet=True, **values):
         raise SceneError(f"{scene} {given} failed (exit {result.returncode})"
                          + (f": {errors[0][len('error:'):].strip()}" if errors else "")
                          + "\n  last lines of its log:\n    " + "\n    ".join(log[-LOG_LINES:]))
-    written = os.path.join(ROOT, folder(out), "summary.json")
+    written = os.path.join(folder(out), "summary.json")
     if not os.path.isfile(written):
         raise SceneError(f"{scene} {' '.join(words[2:])} exited 0 but wrote no {written}: nothing was computed")
-    return out
+    return folder(out)
 
 
 def read_csv(path):
@@ -217,7 +220,7 @@ class Results:
     writes no such file)."""
 
     def __init__(self, out):
-        self.out = out
+        self.out = folder(out)
         path = os.path.join(folder(out), "summary.json")
         if not os.path.isfile(path):
             raise SceneError(f"no summary.json in {out}: no run finished there (a scene writes it last)")
