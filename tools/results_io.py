@@ -170,3 +170,10 @@ def guard(main):
         where = f" {e.filename}" if e.filename else ""
         print(f"error: cannot write{where}: {e.strerror or e}", file=sys.stderr)
         sys.exit(1)
+    except (KeyError, TypeError, ValueError, IndexError) as e:
+        # Well-formed files whose content is not what the scenes write (a number given as a string,
+        # a key missing): one line naming the value, not a traceback. (A bug of the tool shows the
+        # same way; the text says which value.)
+        print(f"error: the results read do not have the form the scenes write ({type(e).__name__}: {e}): "
+              "an edited or foreign summary.json or CSV? run the scene again", file=sys.stderr)
+        sys.exit(1)
