@@ -85,28 +85,42 @@ inline std::vector<std::string> words(const std::string& list) {
 // Removes the entries of `dir` (not below it) whose names match one of the space-separated shell
 // patterns of `patterns` (fnmatch: `fields-*.csv`; a match that is a directory goes whole).
 // A pattern with a slash or equal to `.`/`..` is refused: it could reach outside `dir`.
-inline std::string remove_matching(const std::string& dir, const std::string& patterns) {
+// The entries of `dir` (not below it) whose names match one of the space-separated shell patterns
+// of `patterns` into `found`; "" or the reason. A pattern with a slash or equal to `.`/`..` is
+// refused: it could reach outside `dir`.
+inline std::string matching_entries(const std::string& dir, const std::string& patterns, std::vector<fs::path>& found) {
   const auto list = words(patterns);
   for (const auto& p : list)
     if (p.find('/') != std::string::npos || p == "." || p == "..")
       return "refusing to remove '" + p + "' in " + dir + ": a removal pattern names entries of the folder only";
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) return "cannot remove the earlier results in " + dir + ": not a directory";
-  std::vector<fs::path> doomed;
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string name = it->path().filename().string();
-    for (const auto& p : list)
-      if (fnmatch(p.c_str(), name.c_str(), FNM_PERIOD) == 0) {
-        doomed.push_back(it->path());
-        break;
-      }
+    if (std::any_of(list.begin(), list.end(),
+                    [&](const std::string& p) { return fnmatch(p.c_str(), name.c_str(), FNM_PERIOD) == 0; }))
+      found.push_back(it->path());
   }
   if (ec) return "cannot list " + dir + ": " + reason(ec);
+  return {};
+}
+
+// Removes each of `doomed` (a directory whole).
+inline std::string remove_entries(const std::vector<fs::path>& doomed) {
+  std::error_code ec;
   for (const auto& path : doomed) {
     fs::remove_all(path, ec);
     if (ec) return "cannot remove " + path.string() + ": " + reason(ec);
   }
   return {};
+}
+
+// Removes the entries of `dir` (not below it) whose names match one of the space-separated shell
+// patterns of `patterns` (fnmatch: `fields-*.csv`; a match that is a directory goes whole).
+inline std::string remove_matching(const std::string& dir, const std::string& patterns) {
+  std::vector<fs::path> doomed;
+  if (auto e = matching_entries(dir, patterns, doomed); !e.empty()) return e;
+  return remove_entries(doomed);
 }
 
 // Whether the process `pid` is alive on this machine (a lock of a dead process is stale). A killed
@@ -469,30 +483,20 @@ inline std::string claim_locked(const fs::path& d, const std::string& dir, const
   // Under the lock: the folder as it is now (a run that held it may have added entries).
   if (auto e = foreign_entry(d); !e.empty()) return e;
   if (auto e = read_manifest(d, m); !e.empty()) return e;
-  const auto wanted = words(patterns);
-  for (const auto& p : wanted)
-    if (p.find('/') != std::string::npos || p == "." || p == "..")
-      return "refusing to remove '" + p + "' in " + dir + ": a removal pattern names entries of the folder only";
-  // The existing entries that are the manifest's (listed, or a listed file's unfinished copy).
+  // The existing entries, all the manifest's (listed, or a listed file's unfinished copy:
+  // foreign_entry found no other): every one for a fresh run, those matching `patterns` for a
+  // resumed one.
   std::vector<fs::path> doomed;
-  for (fs::directory_iterator it(d, ec), end; !ec && it != end; it.increment(ec)) {
-    const std::string name = it->path().filename().string();
-    if (bookkeeping(name)) continue;
-    if (resume) {
-      const bool match = std::any_of(wanted.begin(), wanted.end(), [&](const std::string& p) {
-        return fnmatch(p.c_str(), name.c_str(), FNM_PERIOD) == 0;
-      });
-      if (!match) continue;
-    }
-    doomed.push_back(it->path());  // foreign_entry found every entry to be the manifest's
+  if (resume) {
+    if (auto e = matching_entries(d.string(), patterns, doomed); !e.empty()) return e;
+  } else {
+    for (fs::directory_iterator it(d, ec), end; !ec && it != end; it.increment(ec))
+      if (!bookkeeping(it->path().filename().string())) doomed.push_back(it->path());
+    if (ec) return "cannot list " + dir + ": " + reason(ec);
   }
-  if (ec) return "cannot list " + dir + ": " + reason(ec);
   for (const auto& path : doomed)
     if (auto e = busy_inside(path, pid); !e.empty()) return e;
-  for (const auto& path : doomed) {
-    fs::remove_all(path, ec);
-    if (ec) return "cannot remove " + path.string() + ": " + reason(ec);
-  }
+  if (auto e = remove_entries(doomed); !e.empty()) return e;
   if (!resume)
     if (auto e = write_manifest(d, scene, pid); !e.empty()) return e;
   return {};
@@ -547,10 +551,25 @@ inline std::string truncate_file(const std::string& path, long long length) {
 // as 16 hex digits; "" when the file cannot be read or is shorter. Not a cryptographic seal: it
 // names an accidental or careless change (an edited number, a file cut or continued), which is
 // what a checkpoint's reader must not take for the run's state.
+struct Fnv1a {
+  std::uint64_t h = 14695981039346656037ULL;
+  void add(const char* data, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i) {
+      h ^= (unsigned char)data[i];
+      h *= 1099511628211ULL;
+    }
+  }
+  std::string hex() const {
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", (unsigned long long)h);
+    return text;
+  }
+};
+
 inline std::string checksum(const std::string& path, long long length = -1) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return {};
-  std::uint64_t h = 14695981039346656037ULL;
+  Fnv1a sum;
   char buffer[1 << 16];
   long long left = length;
   while (length < 0 || left > 0) {
@@ -558,17 +577,12 @@ inline std::string checksum(const std::string& path, long long length = -1) {
                                             : (std::streamsize)std::min<long long>(left, sizeof buffer);
     in.read(buffer, want);
     const std::streamsize got = in.gcount();
-    for (std::streamsize i = 0; i < got; ++i) {
-      h ^= (unsigned char)buffer[i];
-      h *= 1099511628211ULL;
-    }
+    sum.add(buffer, (std::size_t)got);
     left -= got;
     if (got < want) break;
   }
   if (length >= 0 && left > 0) return {};
-  char text[17];
-  std::snprintf(text, sizeof text, "%016llx", (unsigned long long)h);
-  return text;
+  return sum.hex();
 }
 
 inline const char* seal_word = "checksum ";
@@ -596,15 +610,11 @@ inline std::string seal_error(const std::string& path) {
   const std::string last = text.substr(line, text.size() - 1 - line);
   if (last.compare(0, std::strlen(seal_word), seal_word) != 0)
     return "has no checksum line at its end (cut short, or written by another version)";
-  std::uint64_t h = 14695981039346656037ULL;
-  for (std::size_t i = 0; i < line; ++i) {
-    h ^= (unsigned char)text[i];
-    h *= 1099511628211ULL;
-  }
-  char sum[17];
-  std::snprintf(sum, sizeof sum, "%016llx", (unsigned long long)h);
+  Fnv1a content;
+  content.add(text.data(), line);
+  const std::string sum = content.hex();
   if (last.substr(std::strlen(seal_word)) != sum)
-    return std::string("was changed after it was written (its content's checksum is ") + sum + ", its last line says " +
+    return "was changed after it was written (its content's checksum is " + sum + ", its last line says " +
            last.substr(std::strlen(seal_word)) + ")";
   return {};
 }
