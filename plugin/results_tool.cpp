@@ -1,13 +1,16 @@
-// sma-results: the results folder's claim (plugin/core/files.hpp) for the suite's Python tools,
-// so that a sweep takes its folder by the same rules as a scene (one implementation: the manifest,
-// the lock, the removal of what an earlier run listed). Paths are arguments, never shell text.
+// sma-results: the results folder's claim and manifest (plugin/core/files.hpp) for the suite's
+// Python tools, so that a sweep takes its folder and a plot tool lists its figures by the same
+// rules as a scene (one implementation: the manifest, the lock, the removal of what an earlier run
+// listed). Paths are arguments, never shell text.
 //   sma-results claim DIR SCENE PID    refuse DIR or lock it for PID, clear what its manifest lists
 //   sma-results release DIR PID        remove PID's lock of DIR
+//   sma-results record PATH            list PATH in the manifest of the results folder above it
 // Exit 0 on success; else 1 and one line "error: <reason naming the path>" on stderr; 2 on a bad
 // command line.
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "core/files.hpp"
 
@@ -22,10 +25,17 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "error: %s\n", error.c_str());
     return 1;
   }
+  if (verb == "record" && argc == 3) {
+    std::vector<std::string> known;
+    const std::string error = sma::files::record_result(argv[2], known);
+    if (error.empty()) return 0;
+    std::fprintf(stderr, "error: %s\n", error.c_str());
+    return 1;
+  }
   if (verb == "release" && argc == 4 && pid_ok) {
     sma::files::release_results(argv[2], pid);
     return 0;
   }
-  std::fprintf(stderr, "usage: sma-results claim DIR SCENE PID | release DIR PID\n");
+  std::fprintf(stderr, "usage: sma-results claim DIR SCENE PID | release DIR PID | record PATH\n");
   return 2;
 }

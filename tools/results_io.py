@@ -15,34 +15,26 @@ import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-MANIFEST = ".sma-results"
-MANIFEST_HEADER = "sma-results manifest 1"
 RESULTS_TOOL = os.path.join(ROOT, "plugin", "build", "sma-results")
+
+
+def results_tool(verb, *words):
+    """Runs plugin/build/sma-results VERB WORDS...; a ResultsError with its error line if it fails."""
+    if not os.access(RESULTS_TOOL, os.X_OK):
+        raise ResultsError(f"{RESULTS_TOOL} is not built: run 'make plugin'")
+    done = subprocess.run([RESULTS_TOOL, verb, *words], capture_output=True, text=True)
+    if done.returncode != 0:
+        message = done.stderr.strip().splitlines()
+        raise ResultsError(message[-1][len("error: "):] if message and message[-1].startswith("error: ")
+                           else f"sma-results {verb} {words[0]} failed (exit {done.returncode})")
 
 
 def record(path):
     """Lists `path` (a file a tool is about to write) in the manifest of the nearest results folder
     above it, as the scenes do (plugin/core/files.hpp record_result): a later run of the folder
     then replaces it, and refuses nothing of ours. Outside a results folder nothing is recorded
-    (docs/variants' figures). A manifest of an older version (no header) is left alone."""
-    full = os.path.abspath(path)
-    rest = os.path.basename(full)
-    folder = os.path.dirname(full)
-    while True:
-        manifest = os.path.join(folder, MANIFEST)
-        if os.path.isfile(manifest):
-            with open(manifest) as f:
-                lines = f.read().splitlines()
-            if lines[:1] == [MANIFEST_HEADER] and rest not in lines[2:]:
-                # One write in append mode: lines added by several processes at once do not mix.
-                with open(manifest, "a") as f:
-                    f.write(rest + "\n")
-            return
-        parent = os.path.dirname(folder)
-        if parent == folder:
-            return
-        rest = os.path.join(os.path.basename(folder), rest)
-        folder = parent
+    (docs/variants' figures)."""
+    results_tool("record", os.path.abspath(path))
 
 
 def claim(folder, scene):
@@ -50,13 +42,7 @@ def claim(folder, scene):
     nothing touched) when it holds anything its manifest does not list or another run holds it;
     else what an earlier run listed there is removed and a manifest of `scene` started. The lock
     goes with release(folder) or this process's end (a later run finds it stale)."""
-    if not os.access(RESULTS_TOOL, os.X_OK):
-        raise ResultsError(f"{RESULTS_TOOL} is not built: run 'make plugin'")
-    done = subprocess.run([RESULTS_TOOL, "claim", folder, scene, str(os.getpid())], capture_output=True, text=True)
-    if done.returncode != 0:
-        message = done.stderr.strip().splitlines()
-        raise ResultsError(message[-1][len("error: "):] if message and message[-1].startswith("error: ")
-                           else f"sma-results claim {folder} failed (exit {done.returncode})")
+    results_tool("claim", folder, scene, str(os.getpid()))
 
 
 def release(folder):
@@ -66,6 +52,21 @@ def release(folder):
 
 class ResultsError(Exception):
     """A results file that is missing, cut or damaged; the message names it."""
+
+
+def opened(path, **kwargs):
+    """open(path, **kwargs) of a results file, or a ResultsError naming it: missing, a directory, a
+    device or a pipe (whose read would block or never end), or unreadable."""
+    if os.path.exists(path) and not os.path.isfile(path) and not os.path.isdir(path):
+        raise ResultsError(f"{path} is not a regular file (a device or a pipe), not the run's file")
+    try:
+        return open(path, **kwargs)
+    except FileNotFoundError:
+        raise ResultsError(f"{path} is missing (the run did not finish, or wrote elsewhere)") from None
+    except IsADirectoryError:
+        raise ResultsError(f"{path} is a directory, not the run's file") from None
+    except OSError as e:
+        raise ResultsError(f"{path} cannot be read ({e.strerror})") from None
 
 
 def read_json(path):
@@ -85,17 +86,9 @@ def read_json(path):
         if abs(value) > 1.7976931348623157e308:
             raise ValueError(f"the number {text[:20]}... is beyond a double")
         return value
-    if os.path.exists(path) and not os.path.isfile(path) and not os.path.isdir(path):
-        raise ResultsError(f"{path} is not a regular file (a device or a pipe), not the run's file")
     try:
-        with open(path, encoding="utf-8") as f:
+        with opened(path, encoding="utf-8") as f:
             value = json.load(f, parse_constant=no_constant, object_pairs_hook=no_repeat, parse_int=no_huge)
-    except FileNotFoundError:
-        raise ResultsError(f"{path} is missing (the run did not finish, or wrote elsewhere)") from None
-    except IsADirectoryError:
-        raise ResultsError(f"{path} is a directory, not the run's file") from None
-    except OSError as e:
-        raise ResultsError(f"{path} cannot be read ({e.strerror})") from None
     except (ValueError, UnicodeDecodeError, RecursionError) as e:  # JSONDecodeError is a ValueError
         raise ResultsError(f"{path} is damaged ({type(e).__name__}: {str(e)[:200]}): run the scene again") from None
     if not isinstance(value, dict):
@@ -109,18 +102,10 @@ def read_csv(path, skip_comment=True):
     """{column: [float]} of a CSV with a header line (`#` lines skipped): every row must have the
     header's number of fields, every field a finite or nan number; else a ResultsError naming the
     file, its line and its column."""
-    if os.path.exists(path) and not os.path.isfile(path) and not os.path.isdir(path):
-        raise ResultsError(f"{path} is not a regular file (a device or a pipe), not the run's file")
     try:
         # utf-8-sig: a byte-order mark (an editor's) is not part of the first column's name
-        with open(path, newline="", encoding="utf-8-sig") as f:
+        with opened(path, newline="", encoding="utf-8-sig") as f:
             lines = [(number, ln) for number, ln in enumerate(f, 1) if not (skip_comment and ln.startswith("#"))]
-    except FileNotFoundError:
-        raise ResultsError(f"{path} is missing (the run did not finish, or wrote elsewhere)") from None
-    except IsADirectoryError:
-        raise ResultsError(f"{path} is a directory, not the run's file") from None
-    except OSError as e:
-        raise ResultsError(f"{path} cannot be read ({e.strerror})") from None
     except UnicodeDecodeError as e:
         raise ResultsError(f"{path} is damaged ({e}): run the scene again") from None
     if not lines:
