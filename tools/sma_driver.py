@@ -135,13 +135,6 @@ def word(scene, name, value):
         if not re.match(pattern, text):
             refuse(f"not a whole {'integer' if kind == 'int' else 'number'}")
         value = int(text) if kind == "int" else float(text)
-    if isinstance(value, numbers.Real) and not isinstance(value, numbers.Integral):
-        try:
-            float(value)
-        except OverflowError:
-            refuse("beyond a double")
-    if kind == "real" and isinstance(value, numbers.Integral) and abs(int(value)) > 1.7976931348623157e308:
-        refuse("beyond a double")
     if kind == "int":
         if not isinstance(value, numbers.Integral):
             refuse("an int option takes an integer")
@@ -149,9 +142,15 @@ def word(scene, name, value):
             refuse("outside FreeFEM's 32-bit int")
         return str(int(value))
     if kind == "real":
-        if not isinstance(value, numbers.Real) or not math.isfinite(float(value)):
+        if not isinstance(value, numbers.Real):
             refuse("a real option takes a finite number")
-        return repr(float(value))
+        try:
+            number = float(value)
+        except OverflowError:  # an int or a fraction beyond a double (float() of 10**400)
+            refuse("beyond a double")
+        if not math.isfinite(number):
+            refuse("a real option takes a finite number")
+        return repr(number)
     refuse(f"an option of unknown type {kind!r}")
 
 
@@ -188,7 +187,8 @@ def run(scene, out, quiet=True, **values):
     naming the scene and its options, with the run's error line and the last lines of its log."""
     if quiet and "quiet" in options(scene) and "quiet" not in values:
         values["quiet"] = 1
-    words = command(scene, out, **values)
+    path = folder(out)
+    words = command(scene, path, **values)
     result = children.run(words, cwd=ROOT, capture_output=True, text=True)
     if result.returncode != 0:
         log = (result.stdout + "\n" + result.stderr).strip().splitlines()
@@ -197,10 +197,10 @@ def run(scene, out, quiet=True, **values):
         raise SceneError(f"{scene} {given} failed (exit {result.returncode})"
                          + (f": {errors[0][len('error:'):].strip()}" if errors else "")
                          + "\n  last lines of its log:\n    " + "\n    ".join(log[-LOG_LINES:]))
-    written = os.path.join(folder(out), "summary.json")
+    written = os.path.join(path, "summary.json")
     if not os.path.isfile(written):
         raise SceneError(f"{scene} {' '.join(words[2:])} exited 0 but wrote no {written}: nothing was computed")
-    return folder(out)
+    return path
 
 
 def read_csv(path):
@@ -221,16 +221,16 @@ class Results:
 
     def __init__(self, out):
         self.out = folder(out)
-        path = os.path.join(folder(out), "summary.json")
+        path = os.path.join(self.out, "summary.json")
         if not os.path.isfile(path):
             raise SceneError(f"no summary.json in {out}: no run finished there (a scene writes it last)")
         try:
             self.summary = results_io.read_json(path)
         except results_io.ResultsError as e:
             raise SceneError(str(e)) from None
-        self.history = read_csv(os.path.join(folder(out), "history.csv"))
-        self.points = read_csv(os.path.join(folder(out), "points.csv"))
-        self.contact = read_csv(os.path.join(folder(out), "contact-final.csv"))
+        self.history = read_csv(os.path.join(self.out, "history.csv"))
+        self.points = read_csv(os.path.join(self.out, "points.csv"))
+        self.contact = read_csv(os.path.join(self.out, "contact-final.csv"))
 
     def __repr__(self):
         files = [n for n in ("history", "points", "contact") if getattr(self, n) is not None]

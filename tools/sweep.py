@@ -347,17 +347,6 @@ def write_json(path, record):
 
 def main(argv):
     try:
-        return sweep(argv)
-    finally:
-        if _claimed:
-            results_io.release(_claimed[0])
-
-
-_claimed = []  # the sweep's folder, once taken
-
-
-def sweep(argv):
-    try:
         args = parse(argv)
         scene, param, values = args["scene"], args["param"], args["values"]
         sma.script(scene)
@@ -374,10 +363,17 @@ def sweep(argv):
     # refused untouched; an earlier sweep's runs, table and figures go first.
     try:
         results_io.claim(out, "sweep " + scene)
-        _claimed.append(out)
     except results_io.ResultsError as e:
         print(f"error: {e}", file=sys.stderr)
         return 2
+    try:
+        return run_all(out, scene, param, values, args, fixed)
+    finally:
+        results_io.release(out)
+
+
+def run_all(out, scene, param, values, args, fixed):
+    """Runs every value into its folder of `out` (taken), then publishes the table and figures."""
     jobs = max(1, min(args["jobs"], os.cpu_count() or 1, len(values)))
     folders = [os.path.join(out, f"{param}={v}") for v in values]
     print(f"sweep: {scene} -{param} over {' '.join(values)} ({jobs} at a time) into {out}/", flush=True)
