@@ -15,7 +15,12 @@ more with -direction spherical, and the beam scene on the coarse mesh, and asser
   * -direction spherical reproduces edp/scenes/beam.edp (the paper's law): the same phase map
     byte for byte and the same DC iterations and L_II values;
   * on the deviatoric beam, L_II never increases along the DC iterations, and both martensites
-    appear (tension and compression sides) on every mesh.
+    appear (tension and compression sides) on every mesh;
+  * the hook on the sleeve (tests/hooks/hoop-direction.edp, coarse mesh, 600 steps): D = I through
+    the directed code gives sleeve-circular's files byte for byte (both step solvers), and the hoop
+    direction D = sqrt(2) e_theta e_theta, which turns with each triangle, gives the same steps with
+    the newton step solver as with the nested loops (the plugin takes B whatever D), as close as
+    the two solvers are on sleeve-circular.
 Writes results/checks/variant_deviatoric.json.
 """
 import json
@@ -116,6 +121,39 @@ def main():
               f"deviatoric beam {name}: both martensites (M1 {level['fraction_m1']:.3f}, M2 "
               f"{level['fraction_m2']:.3f}), tip deflection {level['tip_deflection'] * 1e3:.2f} mm")
         figures["beam"][name] = {k: level[k] for k in ("dc_iterations", "fraction_m1", "fraction_m2", "tip_deflection")}
+
+    # The sleeve: the directed code at D = I, and newton against the nested loops with a hoop D.
+    coarse = ["-mesh", "meshes/sleeve-coarse.msh", "-steps", "600", "-quiet", "1"]
+    runs = {}
+    for solver in ("newton", "fixedpoint"):
+        runs[("circular", solver)] = run_scene("sleeve-circular", f"variant-deviatoric-circular-{solver}", *coarse,
+                                               "-stepsolver", solver)
+        for mix in ("0", "1"):
+            runs[(mix, solver)] = os.path.join(TEST_RESULTS, f"variant-deviatoric-hoop{mix}-{solver}")
+            subprocess.run([FF, "tests/hooks/hoop-direction.edp", "-out", runs[(mix, solver)], "-mix", mix,
+                            "-stepsolver", solver, *coarse], cwd=ROOT, check=True)
+    files = ("history.csv", "points.csv", "contact-final.csv", "fields-1-dilated.csv", "fields-2-contact.csv",
+             "fields-3-end.csv")
+    for solver in ("newton", "fixedpoint"):
+        same = [f for f in files if open(os.path.join(runs[("0", solver)], f), "rb").read()
+                == open(os.path.join(runs[("circular", solver)], f), "rb").read()]
+        check(len(same) == len(files), f"sleeve, D = I through PhaseDirection, -stepsolver {solver}: "
+              f"{len(same)} of {len(files)} files equal sleeve-circular's byte for byte ({', '.join(files)})")
+    gaps = {}
+    for case in ("circular", "1"):
+        a, b = (rows(os.path.join(runs[(case, s)], "history.csv")) for s in ("newton", "fixedpoint"))
+        scale = max(abs(float(r["pressure_mean"])) for r in b)
+        gaps[case] = {k: max(abs(float(x[k]) - float(y[k])) for x, y in zip(a, b)) / (scale if k == "pressure_mean" else 1)
+                      for k in ("pressure_mean", "fraction_austenite")}
+        gaps[case]["steps"] = len(a) == len(b)
+    hoop, circ = gaps["1"], gaps["circular"]
+    check(hoop["steps"] and hoop["pressure_mean"] <= max(10 * circ["pressure_mean"], 1e-7)
+          and hoop["fraction_austenite"] <= max(10 * circ["fraction_austenite"], 1e-7),
+          f"sleeve, hoop direction: newton = nested loops at every step, mean pressure within "
+          f"{hoop['pressure_mean']:.1e} of its largest value and austenite fraction within "
+          f"{hoop['fraction_austenite']:.1e} (sleeve-circular's two solvers: {circ['pressure_mean']:.1e}, "
+          f"{circ['fraction_austenite']:.1e})")
+    figures["sleeve_newton_vs_fixedpoint"] = gaps
 
     record("variant_deviatoric", figures)
     finish()
