@@ -4,6 +4,7 @@
   asymmetric-phases.png   beam phase zones, symmetric law against alpha_minus < alpha_plus (medium mesh)
   lobed-pressure.png      contact pressure and tangential density along the ring, circle and lobed pipe
   p2-convergence.png      beam tip deflection against degrees of freedom, P1 and P2
+  deviatoric-phases.png   beam phase zones with the deviatoric transformation direction (medium mesh)
 Usage: tools/plot_variants.py [--only <variant>] [results/variants] [docs/variants]
   (--only: the one figure of that variant, e.g. into its results folder: make run SCENE=beam-p2)
 """
@@ -88,6 +89,24 @@ def p2(src, dst):
     save(fig, os.path.join(dst, "p2-convergence.png"))
 
 
+def deviatoric(src, dst, mesh="medium"):
+    summary = results_io.read_json(os.path.join(src, "summary.json"))
+    level = next((m for m in summary["meshes"] if m["name"] == mesh), summary["meshes"][-1])
+    table = rows(os.path.join(src, f"phase-{level['name']}.csv"))
+    fig, ax = plt.subplots(figsize=(10, 1.9))
+    polys = [[(float(r[f"x{i}"]), float(r[f"y{i}"])) for i in (1, 2, 3)] for r in table]
+    ax.add_collection(PolyCollection(polys, facecolors=[PHASE_COLOURS[int(float(r["phase"]))] for r in table],
+                                     edgecolors="0.35", linewidths=0.1))
+    ax.set_xlim(0, 0.1)
+    ax.set_ylim(0, 0.01)
+    ax.set_aspect("equal")
+    ax.set_yticks([])
+    ax.set_title(f"direction {summary['parameters']['direction']}: M1 (black) {level['fraction_m1']:.3f}, "
+                 f"M2 (white) {level['fraction_m2']:.3f}, tip {level['tip_deflection'] * 1e3:.2f} mm "
+                 f"({level['name']} mesh)", fontsize=9)
+    save(fig, os.path.join(dst, "deviatoric-phases.png"))
+
+
 def main():
     args = sys.argv[1:]
     only = None
@@ -96,7 +115,7 @@ def main():
     src = args[0] if len(args) > 0 else "results/variants"
     dst = args[1] if len(args) > 1 else "docs/variants"
     os.makedirs(dst, exist_ok=True)
-    figures = {"beam-asymmetric": asymmetric, "ring-lobed": lobed, "beam-p2": p2}
+    figures = {"beam-asymmetric": asymmetric, "ring-lobed": lobed, "beam-p2": p2, "beam-deviatoric": deviatoric}
     if only is not None and only not in figures:
         sys.exit(f"error: no figure of variant {only!r} here (figures: {', '.join(figures)})")
     for name, draw in figures.items():

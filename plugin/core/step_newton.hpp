@@ -78,7 +78,9 @@ struct StepProblem {
   SparseMatrix latent;  // nodes x points: int s phi_i (the P0 -> P1 load)
   double latent_scale = 1.0;  // rho L / dt
   SparseMatrix interp;  // points x nodes: T at the points
-  // Mechanics: rhs = (f + B s) .* free, tr e = (B' u) ./ area.
+  // Mechanics: rhs = (f + B s) .* free, tr e = (B' u) ./ area. B is the script's: with a
+  // transformation direction D (edp/lib/elasticity.idp, PhaseDirection) it loads s D and this
+  // "trace" is the driving strain D:e; nothing here depends on D but the laminate modulus.
   const SpdFactor* stiffness = nullptr;
   const DelassusFactor* contact = nullptr;  // null: no contact
   SparseMatrix load;                        // dofs x points: B
