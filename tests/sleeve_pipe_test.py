@@ -15,8 +15,16 @@
    from the pipe's deformed surface is closed at the end and never negative, the reaction
    complementary to it at every step; the pressures on the two bodies are the one force over each
    body's own radius.
-4. Bad inputs: -pipeE, -pipenu, -pipeRi out of range and an elastic pipe asked of a 2D scene fail
-   with one line naming the option (docs/errors.md lists them; the bad-inputs test runs its rows).
+4. Bad inputs: -pipeE, -pipenu, -pipeRi out of range and an elastic pipe asked of the half ring
+   (sleeve-offset) fail with one line naming the option (docs/errors.md lists them; the bad-inputs
+   test runs its rows).
+5. The 2D scenes (the quarter ring; the pipe meshed, meshes/pipe.geo): the compound cylinders'
+   pressure on 6 and 12 layers (steel shaft, plane strain), order about 2 and the rigid pipe's
+   error on the same mesh; the 1D against the 2D with the same pipe (coarse mesh against nr 6:
+   the curve and the pipe's surface motion); the rigid limit (-pipeE 1e15) of sleeve-circular,
+   sleeve-elliptic and sleeve-elliptic-friction; each body's interface forces against the
+   reactions it is loaded by and the gap from the deformed pipe; Coulomb's cone with the steel
+   shaft under friction.
 Writes results/checks/sleeve_pipe.json.
 """
 import json
@@ -30,7 +38,8 @@ sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "tools"))
 
 from checklib import ROOT, TEST_RESULTS, check, finish, record, rows, run_scene  # noqa: E402
-from lame import compound_pressure, pipe_inner_displacement  # noqa: E402
+from curve_error import curve_error  # noqa: E402
+from lame import compound_pressure, lame_pressure, pipe_inner_displacement  # noqa: E402
 
 STEEL = ("200e9", "0.28")  # the pipe of checks 1 and 3: E (Pa), nu
 
@@ -67,6 +76,94 @@ def action_reaction(tag, run):
           f"(of the interference); pipe motion = -F c to {pipe_motion:.1e}")
     return {"force_balance": balance, "ring_force_vs_reaction": ring_vs_reaction, "gap_end": gap_end,
             "gap_min": gap_min, "complementarity": complementarity}
+
+
+def scene2d(scene, tag, *args):
+    out = run_scene(scene, "sleeve-pipe-2d-" + tag, "-quiet", "1", "-vtkevery", "0", *args)
+    return {"dir": out, "history": os.path.join(out, "history.csv"),
+            "summary": json.load(open(os.path.join(out, "summary.json"))),
+            "rows": rows(os.path.join(out, "history.csv"))}
+
+
+def two_d_invariants(tag, run):
+    """Action = reaction and the gap from the deformed pipe, on a 2D run; returns the figures."""
+    pipe, s = run["summary"]["pipe"], run["summary"]
+    delta = s["parameters"]["pipe_A"] - s["parameters"]["ring_inner_radius"]
+    ok = (pipe["ring_balance"] < 1e-9 and pipe["pipe_balance"] < 1e-9 and pipe["gap_deformed_min"] >= -1e-9 * delta
+          and pipe["gap_deformed_contact_max"] <= 1e-9 * delta)
+    check(ok, f"{tag}: each body's interface forces equal the reactions it is loaded by (ring {pipe['ring_balance']:.1e}, "
+          f"pipe {pipe['pipe_balance']:.1e}); gap from the deformed pipe >= {pipe['gap_deformed_min']:.1e} m, closed to "
+          f"{pipe['gap_deformed_contact_max']:.1e} m where in contact; resultants ring {pipe['interface_force_ring']}, "
+          f"pipe {pipe['interface_force_pipe']} N/m (the rest on the pipe's symmetry cuts)")
+    return {k: pipe[k] for k in ("ring_balance", "pipe_balance", "gap_deformed_min", "gap_deformed_contact_max",
+                                 "interface_force_ring", "interface_force_pipe")}
+
+
+def two_d():
+    figures = {"invariants": {}}
+    steel = ("-pipeE", "2.1e11")
+    # Compound cylinders in 2D: the quarter ring of 6 and 12 layers on the solid steel shaft (plane
+    # strain) against the closed form, beside the rigid pipe's error on the same meshes.
+    errors = {}
+    for mesh in ("sleeve-coarse", "sleeve-nr12"):
+        for label, extra in (("rigid", ()), ("steel", steel)):
+            run = scene2d("sleeve-circular", f"lame-{mesh}-{label}", "-mesh", f"meshes/{mesh}.msh", "-steps", "300",
+                          "-tend", "30", *extra)
+            s, p = run["summary"], run["summary"]["parameters"]
+            a, b = p["ring_inner_radius"], p["ring_inner_radius"] + 0.01
+            exact = (compound_pressure(p["E"], p["nu"], a, b, 2.1e11, 0.3, 0.0, p["pipe_A"]) if extra
+                     else lame_pressure(p["E"], p["nu"], a, b, p["pipe_A"] - a))
+            errors[(mesh, label)] = s["final_pressure_mean"] / exact - 1
+            if extra:
+                figures["invariants"][f"lame-{mesh}"] = two_d_invariants(f"2D {mesh}, steel shaft", run)
+    order = math.log2(errors[("sleeve-coarse", "steel")] / errors[("sleeve-nr12", "steel")])
+    same = max(abs(errors[(m, "steel")] / errors[(m, "rigid")] - 1) for m in ("sleeve-coarse", "sleeve-nr12"))
+    print("2D final pressure errors: " + ", ".join(f"{m} {lab} {e:.3e}" for (m, lab), e in errors.items()))
+    check(abs(errors[("sleeve-nr12", "steel")]) < 2e-4 and 1.8 <= order <= 2.2 and same < 0.05,
+          f"2D compound cylinders (steel shaft, plane strain): error {errors[('sleeve-coarse', 'steel')]:.2e} at 6 layers, "
+          f"{errors[('sleeve-nr12', 'steel')]:.2e} at 12: order {order:.2f}; within {100 * same:.1f} % of the rigid "
+          f"pipe's error on the same mesh (the pipe adds no error of its own)")
+    figures.update(lame_errors={f"{m}/{lab}": e for (m, lab), e in errors.items()}, lame_order=order)
+
+    # 1D against 2D on the circular pipe, with the pipe elastic: the coarse quarter ring (6 layers,
+    # 1500 steps) against sleeve-radial at nr 6.
+    circ = scene2d("sleeve-circular", "circular-coarse-steel", "-mesh", "meshes/sleeve-coarse.msh", *steel)
+    one_d = run_scene("sleeve-radial", "sleeve-pipe-radial-nr6-steel", "-quiet", "1", "-nr", "6", "-steps", "1500", *steel)
+    e = curve_error(circ["history"], os.path.join(one_d, "history.csv"))
+    pipe_1d = json.load(open(os.path.join(one_d, "summary.json")))["pipe"]
+    motion = abs(circ["summary"]["pipe"]["normal_motion_mean"] / pipe_1d["u_outer"] - 1)
+    check(e["first_contact_dt"] == 0 and e["l1"] < 5e-3 and e["final"] < 1e-3 and motion < 2e-3,
+          f"2D (coarse, steel shaft) against 1D (nr 6): first contact at the same step, pressure curve l1 {e['l1']:.2e} < 5e-3 (the rigid pipe's bound, tests/sleeve_radial_test.py), "
+          f"final {e['final']:.1e} < 1e-3; the pipe's surface moves by {circ['summary']['pipe']['normal_motion_mean'] * 1e6:.4f}"
+          f" um against {pipe_1d['u_outer'] * 1e6:.4f} um ({motion:.1e})")
+    figures["circular_2d_vs_1d"] = dict(e, pipe_motion_relative=motion)
+    figures["invariants"]["circular-coarse"] = two_d_invariants("2D circular coarse, steel shaft", circ)
+
+    # Rigid limit in 2D and the elliptic pipe, frictionless and with Coulomb friction (mu 0.2).
+    for scene in ("sleeve-circular", "sleeve-elliptic", "sleeve-elliptic-friction"):
+        rigid = scene2d(scene, f"{scene}-rigid", "-mesh", "meshes/sleeve-coarse.msh")
+        stiff = scene2d(scene, f"{scene}-1e15", "-mesh", "meshes/sleeve-coarse.msh", "-pipeE", "1e15")
+        pmax = max(float(r["pressure_max"]) for r in rigid["rows"])
+        diff = max(max(abs(float(a[k]) - float(b[k])) for k in ("pressure_mean", "pressure_max", "pressure_min"))
+                   for a, b in zip(rigid["rows"], stiff["rows"])) / pmax
+        status = sum(a["contact_nodes"] != b["contact_nodes"] for a, b in zip(rigid["rows"], stiff["rows"]))
+        check(len(rigid["rows"]) == len(stiff["rows"]) and diff <= 2e-5 and status == 0,
+              f"{scene} (coarse): -pipeE 1e15 against the rigid pipe: mean, min and max pressure within {diff:.2e} "
+              f"<= 2e-5 of the peak at every step, contact status equal ({status} steps differ)")
+        figures[f"{scene}_rigid_limit"] = diff
+        figures["invariants"][f"{scene}-1e15"] = two_d_invariants(f"{scene} -pipeE 1e15", stiff)
+        if scene != "sleeve-circular":
+            steel_run = scene2d(scene, f"{scene}-steel", "-mesh", "meshes/sleeve-coarse.msh", *steel)
+            figures["invariants"][f"{scene}-steel"] = two_d_invariants(f"{scene}, steel shaft", steel_run)
+            s = steel_run["summary"]
+            figures[f"{scene}_steel"] = {k: s[k] for k in ("final_pressure_mean", "final_pressure_non_uniformity",
+                                                           "final_tangential_over_normal")}
+            if scene.endswith("friction"):
+                cone = max(float(r["cone_ratio"]) for r in rows(os.path.join(steel_run["dir"], "contact-final.csv")))
+                check(cone <= 1 + 1e-9 and s["final_tangential_over_normal"] > 0,
+                      f"{scene}, steel shaft: Coulomb holds, |r_t| / (mu r_n) <= {cone:.4f} at every node, friction "
+                      f"active (max |r_t| / r_n {s['final_tangential_over_normal']:.4f})")
+    return figures
 
 
 def main():
@@ -134,6 +231,9 @@ def main():
           f"{difference['1e15']:.2e} at 1e15 (ratio {ratio:.1f}, 100 expected)")
     figures["rigid_limit"] = {"relative_difference": difference, "ratio_1e13_over_1e15": ratio}
 
+    # 5. The 2D scenes with the elastic pipe (quarter ring; the pipe meshed: meshes/pipe.geo).
+    figures["2d"] = two_d()
+
     # 4. Bad inputs name the option.
     bad_cases = [
         (["edp/scenes/sleeve-radial.edp", "-pipeE", "-1"], "error: sleeve-radial: -pipeE -1 must be in (0, 1e15] Pa"),
@@ -142,7 +242,7 @@ def main():
          "error: sleeve-radial: -pipenu 0.5 must be in (-1, 0.5)"),
         (["edp/scenes/sleeve-radial.edp", "-pipeE", "2e11", "-pipeRi", "0.0505"],
          "error: sleeve-radial: -pipeRi 0.0505 must be in [0, -pipeA 0.0505) m"),
-        (["edp/scenes/sleeve-circular.edp", "-pipeE", "2e11"], "error: sleeve-circular: -pipeE 2e+11: the elastic pipe"),
+        (["edp/scenes/sleeve-offset.edp", "-pipeE", "2e11"], "error: sleeve-offset: -pipeE 2e+11 needs -ring quarter"),
     ]
     for args, start in bad_cases:
         bad = subprocess.run([os.path.join(ROOT, "tools", "ff"), *args, "-out", os.path.join(TEST_RESULTS, "sleeve-pipe-bad")],
