@@ -137,6 +137,27 @@ def two_d():
           f"final {e['final']:.1e} < 1e-3; the pipe's surface moves by {circ['summary']['pipe']['normal_motion_mean'] * 1e6:.4f}"
           f" um against {pipe_1d['u_outer'] * 1e6:.4f} um ({motion:.1e})")
     figures["circular_2d_vs_1d"] = dict(e, pipe_motion_relative=motion)
+    # The pipe's own field (pipe-3-end.vtu): a solid shaft under a uniform pressure q is in uniform
+    # biaxial compression -q; its area-weighted mean stress is the interface's (the mean-stress
+    # theorem), q = F / R_p with F the ring's force per unit angle.
+    import vtk  # (the ParaView test's reader; imported here: only this check needs it)
+    from vtk.util.numpy_support import vtk_to_numpy
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(os.path.join(circ["dir"], "pipe-3-end.vtu"))
+    reader.Update()
+    grid = reader.GetOutput()
+    quality = vtk.vtkMeshQuality()
+    quality.SetInputData(grid)
+    quality.SetTriangleQualityMeasureToArea()
+    quality.Update()
+    area = vtk_to_numpy(quality.GetOutput().GetCellData().GetArray("Quality"))
+    p = circ["summary"]["parameters"]
+    q = circ["summary"]["final_pressure_mean"] * p["ring_inner_radius"] / p["pipe_A"]
+    means = {n: float((vtk_to_numpy(grid.GetCellData().GetArray(n)) * area).sum() / area.sum()) for n in ("sigma_rr", "sigma_tt")}
+    worst = max(abs(m / -q - 1) for m in means.values())
+    check(worst < 1e-3, f"the pipe's field (pipe-3-end.vtu): area-weighted mean sigma_rr {means['sigma_rr'] / 1e6:.4f}, "
+          f"sigma_tt {means['sigma_tt'] / 1e6:.4f} MPa against -F / R_p = {-q / 1e6:.4f} MPa ({worst:.1e} < 1e-3)")
+    figures["pipe_mean_stress_relative"] = worst
     figures["invariants"]["circular-coarse"] = two_d_invariants("2D circular coarse, steel shaft", circ)
 
     # Rigid limit in 2D and the elliptic pipe, frictionless and with Coulomb friction (mu 0.2).
