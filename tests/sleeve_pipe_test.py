@@ -20,7 +20,8 @@
    test runs its rows).
 5. The 2D scenes (the quarter ring; the pipe meshed, meshes/pipe.geo): the compound cylinders'
    pressure on 6 and 12 layers (steel shaft, plane strain), order about 2 and the rigid pipe's
-   error on the same mesh; the 1D against the 2D with the same pipe (coarse mesh against nr 6:
+   error on the same mesh, and a hollow steel pipe on 12 layers; the pipe's mean stress in its
+   pipe-3-end.vtu against the interface pressure; the 1D against the 2D with the same pipe (coarse mesh against nr 6:
    the curve and the pipe's surface motion); the rigid limit (-pipeE 1e15) of sleeve-circular,
    sleeve-elliptic and sleeve-elliptic-friction; each body's interface forces against the
    reactions it is loaded by and the gap from the deformed pipe; Coulomb's cone with the steel
@@ -116,6 +117,17 @@ def two_d():
             errors[(mesh, label)] = s["final_pressure_mean"] / exact - 1
             if extra:
                 figures["invariants"][f"lame-{mesh}"] = two_d_invariants(f"2D {mesh}, steel shaft", run)
+    # A hollow steel pipe (5.5 mm wall, meshes/pipe-wall.msh) on the 12 layers.
+    run = scene2d("sleeve-circular", "lame-sleeve-nr12-wall", "-mesh", "meshes/sleeve-nr12.msh", "-steps", "300",
+                  "-tend", "30", *steel, "-pipeRi", "0.045")
+    p = run["summary"]["parameters"]
+    a = p["ring_inner_radius"]
+    exact = compound_pressure(p["E"], p["nu"], a, a + 0.01, 2.1e11, 0.3, 0.045, p["pipe_A"])
+    errors[("sleeve-nr12", "wall")] = run["summary"]["final_pressure_mean"] / exact - 1
+    figures["invariants"]["lame-sleeve-nr12-wall"] = two_d_invariants("2D sleeve-nr12, steel wall", run)
+    wall = abs(errors[("sleeve-nr12", "wall")] / errors[("sleeve-nr12", "rigid")] - 1)
+    check(wall < 0.1, f"2D compound cylinders, hollow steel pipe (wall 4.5 to 5.05 cm) on 12 layers: error "
+          f"{errors[('sleeve-nr12', 'wall')]:.2e}, within {100 * wall:.1f} % < 10 % of the rigid pipe's on the same mesh")
     order = math.log2(errors[("sleeve-coarse", "steel")] / errors[("sleeve-nr12", "steel")])
     same = max(abs(errors[(m, "steel")] / errors[(m, "rigid")] - 1) for m in ("sleeve-coarse", "sleeve-nr12"))
     print("2D final pressure errors: " + ", ".join(f"{m} {lab} {e:.3e}" for (m, lab), e in errors.items()))
