@@ -10,6 +10,7 @@
 2. Rigid limit: -pipeE 1e15 reproduces the rigid pipe's run (the default run: paper scale, nr 160,
    1000 steps): the whole pressure curve within 2e-5 of its maximum, the same contact status and
    events at every step; the difference is linear in 1/E (1e13: 100 times larger, within 20 %).
+   The nested loops (-stepsolver fixedpoint) give the step solver's curve with a steel shaft.
 3. Action = reaction: each body's nodal force at the interface from its own equilibrium (ring:
    K u - B s - f; pipe: K_p v) are opposite and equal the contact reaction, to round-off; the gap
    from the pipe's deformed surface is closed at the end and never negative, the reaction
@@ -263,6 +264,14 @@ def main():
     check(80 <= ratio <= 120, f"rigid limit: the difference grows as 1/E: {difference['1e13']:.2e} at 1e13 against "
           f"{difference['1e15']:.2e} at 1e15 (ratio {ratio:.1f}, 100 expected)")
     figures["rigid_limit"] = {"relative_difference": difference, "ratio_1e13_over_1e15": ratio}
+    # The two step solvers see the same condensed operator: the paper's nested loops
+    # (-stepsolver fixedpoint) give the step solver's curve with the steel shaft.
+    solvers = {sv: run_scene("sleeve-radial", f"sleeve-pipe-steel-{sv}", "-quiet", "1", *paper, "-pipeE", "2.1e11",
+                             "-stepsolver", sv) for sv in ("newton", "fixedpoint")}
+    e = curve_error(os.path.join(solvers["fixedpoint"], "history.csv"), os.path.join(solvers["newton"], "history.csv"))
+    check(e["l1"] < 1e-4 and e["final"] < 1e-9, f"steel shaft: -stepsolver fixedpoint against newton: l1 {e['l1']:.1e} "
+          f"< 1e-4, final {e['final']:.1e}")
+    figures["fixedpoint_vs_newton_l1"] = e["l1"]
 
     # 5. The 2D scenes with the elastic pipe (quarter ring; the pipe meshed: meshes/pipe.geo).
     figures["2d"] = two_d()
