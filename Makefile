@@ -40,7 +40,10 @@ SLEEVE_MESHES := meshes/sleeve-coarse.msh meshes/sleeve-quarter.msh meshes/sleev
                  meshes/sleeve-nr36.msh
 # Quarter rings with nearly degenerate triangles (docs/stability.md, case 6).
 SLIVER_MESHES := meshes/sliver-thin.msh meshes/sliver-degenerate.msh
-MESHES := $(BEAM_MESHES) $(RING_MESHES) $(SLEEVE_MESHES) $(SLIVER_MESHES)
+# The elastic pipe of the 2D scenes (-pipeE > 0; meshes/pipe.geo): a solid shaft and a wall, the
+# pipe's radius from meshes/sleeve-geometry.txt; the scenes stretch them to -pipeRi .. -pipeA.
+PIPE_MESHES := meshes/pipe-solid.msh meshes/pipe-wall.msh
+MESHES := $(BEAM_MESHES) $(RING_MESHES) $(SLEEVE_MESHES) $(SLIVER_MESHES) $(PIPE_MESHES)
 beam_opt_coarse := -setnumber lc 0.0021
 beam_opt_medium := -setnumber lc 0.00125
 beam_opt_fine := -setnumber lc 0.0007
@@ -81,6 +84,11 @@ sleeve_opt_aniso36 := $(SLEEVE_RING) -setnumber nr 36 -setnumber nt 18
 sleeve_opt_nr72 := $(SLEEVE_RING) -setnumber nr 72
 sleeve_opt_nr108 := $(SLEEVE_RING) -setnumber nr 108
 sleeve_opt_nr140 := $(SLEEVE_RING) -setnumber nr 140
+# Triangles of about 2 mm in the solid shaft (whose displacement, linear in r, P1 represents
+# exactly) and 0.5 mm in the 5.5 mm wall (docs/parameters.md: its error then below the ring's).
+PIPE_RADIUS := -setnumber R $(shell awk '$$1 == "pipe" {print $$2}' $(SLEEVE_GEOMETRY))
+pipe_opt_solid := $(PIPE_RADIUS) -setnumber lc 0.002
+pipe_opt_wall := $(PIPE_RADIUS) -setnumber Ri 0.045 -setnumber lc 0.0005
 sliver_opt_thin := $(SLEEVE_RING) -setnumber eps 1.3e-5
 sliver_opt_degenerate := $(SLEEVE_RING) -setnumber eps 1e-8
 
@@ -129,6 +137,8 @@ meshes/sleeve-%.msh: meshes/ring.geo $(SLEEVE_GEOMETRY)
 	$(call gmsh_mesh,sleeve)
 meshes/sliver-%.msh: meshes/sliver.geo $(SLEEVE_GEOMETRY)
 	$(call gmsh_mesh,sliver)
+meshes/pipe-%.msh: meshes/pipe.geo $(SLEEVE_GEOMETRY)
+	$(call gmsh_mesh,pipe)
 
 # SCENE reaches the shell through the environment, never pasted into the recipe, so that quotes
 # or backquotes in it are only characters (docs/errors.md).

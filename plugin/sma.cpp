@@ -38,6 +38,9 @@
 //       W = H S A^-1 S H', S = diag(free), from sparse forward solves (no dense A^-1 H' kept);
 //       normalOnly: only the even (normal) rows and columns, the others 0. Keeps W and its factor
 //       Y = L^-1 P S H' in the slot for SpdContactStep.
+//   long SpdDelassusAddCompliance(long handle, real[int,int] C, real[int,int] W)
+//       adds a second deformable body's compliance C (k x k, W's layout) to the slot's W (an
+//       elastic pipe: sparse_spd.hpp add_obstacle_compliance); W receives the new W + C.
 //   long SpdContactStep(long handle, real[] rhs, real[int,int] contactTable, real[] tangentFree,
 //                       real[] [omega, tol, maxit, polish], real[] r, real[] u, real[] info)
 //       one condensed contact global step (plugin/core/contact_step.hpp): the free motion of the
@@ -333,6 +336,23 @@ long SpdDelassus(long const& handle, Matrice_Creuse<double>* const& H, KN<double
   });
 }
 
+long SpdDelassusAddCompliance(long const& handle, KNM<double>* const& C, KNM<double>* const& W) {
+  return guarded("SpdDelassusAddCompliance", [&] {
+    FactorSlot& slot = SlotAt(handle);
+    if (!slot.contact) throw std::invalid_argument("no contact problem in slot " + std::to_string(handle) + " (SpdDelassus first)");
+    Eigen::MatrixXd c(C->N(), C->M());
+    for (long i = 0; i < C->N(); ++i)
+      for (long j = 0; j < C->M(); ++j) c(i, j) = (*C)(i, j);
+    sma::add_obstacle_compliance(*slot.contact, c);
+    const Eigen::MatrixXd& w = slot.contact->w;
+    const long k = w.rows();
+    W->resize(k, k);
+    for (long i = 0; i < k; ++i)
+      for (long j = 0; j < k; ++j) (*W)(i, j) = w(i, j);
+    return k;
+  });
+}
+
 // One condensed contact global step (plugin/core/contact_step.hpp) on the contact problem
 // SpdDelassus formed in slot `handle`; table: one row per node [vertex, nx, ny, gap, threshold g,
 // t.u previous] (contact.idp's contactTable); settings = [omega, tol, maxit, polish].
@@ -538,7 +558,7 @@ long RoundToFloat(KN<double>* const& x) {
   return changed;
 }
 
-double SmaPluginVersion() { return 9.0; }
+double SmaPluginVersion() { return 10.0; }
 
 // FreeFEM's time() has a resolution of one second and clock() counts CPU time; timings of the
 // scenes are wall-clock seconds from a monotonic clock.
@@ -655,6 +675,8 @@ static void Load_Init() {
   Global.Add("SpdSolve", "(", new OneOperator3_<long, long, A, A>(SpdSolve));
   Global.Add("SpdDelassus", "(",
              new OneOperator5_<long, long, Matrice_Creuse<double>*, A, KNM<double>*, long>(SpdDelassus));
+  Global.Add("SpdDelassusAddCompliance", "(",
+             new OneOperator3_<long, long, KNM<double>*, KNM<double>*>(SpdDelassusAddCompliance));
   Global.Add("SpdContactStep", "(",
              new OneOperator8_<long, long, A, KNM<double>*, A, A, A, A, A>(SpdContactStep));
   Global.Add("StepOperatorsSet", "(",

@@ -214,4 +214,38 @@ inline DelassusFactor delassus_factor(const SpdFactor& a, const SparseMatrix& h,
   return result;
 }
 
+// A second deformable body at the contact (an elastic pipe), loaded only by the contact reactions:
+// it receives -H_2' r and moves at the contact rows by -C r, C = H_2 K_2^-1 H_2' its compliance
+// there (symmetric positive semi-definite). The relative motion the Signorini-Coulomb laws see is
+// then H u - (-C r) + gap = H u_free + (W + C) r + gap: the two bodies' compliances add, and every
+// solver of the condensed problem (psor.hpp, contact_step.hpp, step_newton.hpp) runs unchanged on
+// W + C. The first body's u = K^-1 (rhs + S H' r) keeps Y, so only W changes; the second body's
+// displacement is recovered from r by its own solve. C is k x k in W's layout; it must be 0 on the
+// rows W does not stand for (the tangential rows of a frictionless problem), finite and symmetric
+// with a non-negative diagonal.
+inline void add_obstacle_compliance(DelassusFactor& d, const Eigen::MatrixXd& c) {
+  const Eigen::Index k = d.w.rows();
+  if (c.rows() != k || c.cols() != k)
+    throw std::invalid_argument("the compliance is " + std::to_string(c.rows()) + " x " + std::to_string(c.cols()) +
+                                " for a Delassus operator of " + std::to_string(k) + " x " + std::to_string(k));
+  if (!c.allFinite()) throw std::invalid_argument("the compliance has a value that is not finite");
+  const double size = c.cwiseAbs().maxCoeff();
+  std::vector<char> used((std::size_t)k, 0);
+  for (int r : d.rows) used[(std::size_t)r] = 1;
+  for (Eigen::Index i = 0; i < k; ++i) {
+    if (c(i, i) < 0)
+      throw std::invalid_argument("the compliance has a negative diagonal entry " + std::to_string(c(i, i)) +
+                                  " at row " + std::to_string(i));
+    for (Eigen::Index j = 0; j < k; ++j) {
+      if (std::fabs(c(i, j) - c(j, i)) > 1e-12 * size)
+        throw std::invalid_argument("the compliance is not symmetric at (" + std::to_string(i) + ", " +
+                                    std::to_string(j) + ")");
+      if ((!used[(std::size_t)i] || !used[(std::size_t)j]) && c(i, j) != 0.0)
+        throw std::invalid_argument("the compliance couples row " + std::to_string(i) + " or " + std::to_string(j) +
+                                    ", which the frictionless Delassus operator leaves out (tangential rows)");
+    }
+  }
+  d.w += c;
+}
+
 }  // namespace sma

@@ -306,3 +306,71 @@ TEST(ContactStep, OneBackSolveEqualsTheTwoSolveDefinition) {
 }
 
 }  // namespace
+
+// Two deformable bodies in contact (add_obstacle_compliance): the first body's condensed step on
+// W + C, C = H2 K2^-1 H2' the second body's compliance, its displacement recovered as
+// u2 = -K2^-1 H2' r. Checked against the two-body problem's definition: each body in equilibrium
+// (K1 u1 = rhs + H1' r, K2 u2 = -H2' r: action and reaction), and Signorini on the gap measured
+// from the second body's deformed surface, H1 u1 - H2 u2 + gap >= 0, with complementarity.
+TEST(ContactStep, SecondDeformableBodyAddsItsCompliance) {
+  const SparseMatrix a1 = grid_laplacian(9, 9, 0.05), a2 = grid_laplacian(6, 7, 0.3);
+  const int n1 = a1.rows(), n2 = a2.rows(), m = 4;
+  const int nodes1[m] = {3, 22, 40, 58}, nodes2[m] = {5, 12, 20, 33};
+  std::vector<Eigen::Triplet<double, int>> t1, t2;
+  for (int i = 0; i < m; ++i) {
+    t1.emplace_back(2 * i, nodes1[i], 1.0);
+    t2.emplace_back(2 * i, nodes2[i], 1.0);
+  }
+  SparseMatrix h1(2 * m, n1), h2(2 * m, n2);
+  h1.setFromTriplets(t1.begin(), t1.end());
+  h2.setFromTriplets(t2.begin(), t2.end());
+  sma::SpdFactor k1, k2;
+  k1.factorize(a1);
+  k2.factorize(a2);
+  std::vector<double> free1(n1, 1.0), free2(n2, 1.0);
+  sma::DelassusFactor c = sma::delassus_factor(k1, h1, free1, true);
+  const Eigen::MatrixXd w1 = c.w, compliance = sma::delassus_factor(k2, h2, free2, true).w;
+  sma::add_obstacle_compliance(c, compliance);
+  EXPECT_LT((c.w - w1 - compliance).norm(), 1e-14 * w1.norm());
+  std::vector<double> rhs(n1, -1.0), gap = {0.5, 100.0, 0.5, 2.0}, threshold(m, 0.0), reference(m, 0.0),
+      tangent_free(m, 1.0), u1(n1);
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(2 * m);
+  sma::ContactStepSettings set;
+  set.tol = 1e-13;
+  ASSERT_TRUE(sma::condensed_global_step(k1, c, rhs, gap, threshold, reference, tangent_free, set, r, u1).converged);
+  const Eigen::VectorXd load2 = -(h2.transpose() * r);
+  Eigen::VectorXd u2(n2);
+  k2.solve(sma::span<const double>(load2.data(), (std::size_t)n2), sma::span<double>(u2.data(), (std::size_t)n2));
+  const Eigen::Map<Eigen::VectorXd> uu1(u1.data(), n1);
+  const Eigen::Map<Eigen::VectorXd> rhs1(rhs.data(), n1);
+  EXPECT_LT((a1 * uu1 - rhs1 - h1.transpose() * r).norm() / rhs1.norm(), 1e-12);
+  EXPECT_LT((a2 * u2 + h2.transpose() * r).norm() / r.norm(), 1e-12);
+  const Eigen::VectorXd motion = h1 * uu1 - h2 * u2;
+  int active = 0;
+  for (int i = 0; i < m; ++i) {
+    const double normal_gap = motion[2 * i] + gap[i];
+    EXPECT_GE(r[2 * i], 0.0);
+    EXPECT_GE(normal_gap, -1e-9);
+    EXPECT_LT(std::fabs(r[2 * i] * normal_gap), 1e-9 * (1 + r.lpNorm<Eigen::Infinity>()));
+    active += r[2 * i] > 0;
+  }
+  EXPECT_GT(active, 0);
+  EXPECT_LT(active, m);
+  // The same step on the rigid body's W gives larger reactions: the compliant pipe yields.
+  Eigen::VectorXd rigid = Eigen::VectorXd::Zero(2 * m);
+  const sma::DelassusFactor c1 = sma::delassus_factor(k1, h1, free1, true);
+  ASSERT_TRUE(sma::condensed_global_step(k1, c1, rhs, gap, threshold, reference, tangent_free, set, rigid, u1).converged);
+  EXPECT_GT(rigid.sum(), r.sum() * (1 + 1e-6));
+  // Refused: a wrong size, an asymmetric or negative compliance, one on a left-out tangential row.
+  sma::DelassusFactor bad = sma::delassus_factor(k1, h1, free1, true);
+  EXPECT_THROW(sma::add_obstacle_compliance(bad, Eigen::MatrixXd::Zero(2 * m + 1, 2 * m + 1)), std::invalid_argument);
+  Eigen::MatrixXd asym = compliance;
+  asym(0, 2) += 1.0;
+  EXPECT_THROW(sma::add_obstacle_compliance(bad, asym), std::invalid_argument);
+  Eigen::MatrixXd negative = -compliance;
+  EXPECT_THROW(sma::add_obstacle_compliance(bad, negative), std::invalid_argument);
+  Eigen::MatrixXd tangential = Eigen::MatrixXd::Zero(2 * m, 2 * m);
+  tangential(1, 1) = 1.0;
+  EXPECT_THROW(sma::add_obstacle_compliance(bad, tangential), std::invalid_argument);
+  EXPECT_EQ((bad.w - w1).norm(), 0.0);  // a refused compliance leaves W as it was
+}
