@@ -172,7 +172,8 @@ def folder(out):
 
 
 def run(scene, out, quiet=True, **values):
-    """Runs the scene into `out` with the options `values` (g=1000, steps=300); returns `out`.
+    """Runs the scene into `out` with the options `values` (g=1000, steps=300); returns `out` as an
+    absolute path (a relative `out` is taken from the repository root).
     quiet=True adds -quiet 1 when the scene has that option (no line per step). Raises SceneError
     naming the scene and its options, with the run's error line and the last lines of its log."""
     if quiet and "quiet" in options(scene) and "quiet" not in values:

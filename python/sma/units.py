@@ -6,4 +6,5 @@ KELVIN_AT_0C = 273.15
 
 
 def celsius(kelvin):
+    """A temperature in degrees C from kelvin (a number or a numpy array)."""
     return kelvin - KELVIN_AT_0C
