@@ -27,7 +27,9 @@
       through the table's values; read_sweep gives the same table back; the panel figures exist;
   (f) errors name the culprit: a misspelt option (with its close match), a swept option the scene
       does not read, a value of the wrong type, a folder without a run, a CSV or VTU that is absent
-      or damaged, a time fields.pvd does not list, a column without a known unit;
+      or damaged, a time fields.pvd does not list, a column without a known unit (docs/errors.md,
+      "The Python package"); a sweep with a run that fails (g = -1) names it, its other run
+      published and returned with the error;
   (g) the command-line modules are the package's: tools/sma_driver, results_io and children
       re-export the same objects; docs/python-api.md is what tools/python_api.py generates, and
       every public function, class and method of the package has a docstring.
@@ -265,7 +267,16 @@ def error_checks(tmp, r, f):
                 "time": os.path.join(r.out, "fields.pvd") + " lists no state at t = 7.0 s",
                 "cut VTU": cut,
                 "unknown unit": f"{foreign}: no unit is known for the column 'stress_guess'"}
+    partial_out = os.path.join(tmp, "partial")
+    try:
+        sma.sweep("sleeve-radial", {"g": [500, -1]}, fixed={"steps": 30}, out=partial_out)
+        errors["failed run"], finished = "no error", None
+    except sma.SceneError as e:
+        errors["failed run"], finished = str(e), getattr(e, "table", None)
+    expected["failed run"] = f"1 of 2 runs of the sweep in {partial_out} failed:\n  {os.path.join(partial_out, 'g=-1')}: "
     wrong = {k: errors[k] for k in expected if expected[k] not in errors[k]}
+    if "-g -1 must be >= 0" not in errors["failed run"] or finished is None or list(finished["g_W/(m^2 K)"]) != [500.0]:
+        wrong["failed run"] = f"{errors['failed run']}; finished runs {None if finished is None else len(finished)}"
     check(not wrong and not os.path.exists(os.path.join(tmp, "x")) and not os.path.exists(os.path.join(tmp, "s")),
           f"(f) {len(expected)} errors name the option, value, folder, file or column, before any run: "
           + (f"wrong: {wrong}" if wrong else "; ".join(v.splitlines()[0][:70] for v in errors.values())))

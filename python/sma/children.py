@@ -36,16 +36,7 @@ def _forward(signum, frame):
     with _lock:
         _stopped_by.append(signum)
         procs = list(_running)
-    for p in procs:
-        try:
-            p.send_signal(signum)
-        except OSError:
-            pass
-    for p in procs:
-        try:
-            p.wait(timeout=10)
-        except subprocess.TimeoutExpired:
-            p.kill()
+    _end(procs, signum)
     print(f"error: stopped by signal {signal.Signals(signum).name}: {len(procs)} running child process(es) "
           "stopped with it", file=sys.stderr)
     sys.stderr.flush()
@@ -79,7 +70,33 @@ def run(args, **kwargs):
             p.terminate()
         try:
             out, err = p.communicate()
+        except BaseException:  # a KeyboardInterrupt (a notebook's interrupt): the child stops with the call
+            _end([p])
+            raise
         finally:
             with _lock:
                 _running.discard(p)
     return subprocess.CompletedProcess(args, p.returncode, out, err)
+
+
+def _end(procs, signum=signal.SIGTERM):
+    """Sends signum to each process, awaits each (10 s, then SIGKILL)."""
+    for p in procs:
+        try:
+            p.send_signal(signum)
+        except OSError:
+            pass
+    for p in procs:
+        try:
+            p.wait(timeout=10)
+        except subprocess.TimeoutExpired:
+            p.kill()
+            p.wait()
+
+
+def stop_running():
+    """Stops every child still running (a TERM, then SIGKILL after 10 s) and awaits them: an
+    interrupted sweep in a notebook, whose runs wait in other threads, stops them all."""
+    with _lock:
+        procs = list(_running)
+    _end(procs)

@@ -27,7 +27,7 @@ import re
 
 import numpy as np
 
-from . import driver, results_io
+from . import children, driver, results_io
 from .errors import SceneError
 from .plotting import pyplot, save
 from .units import KELVIN_AT_0C
@@ -320,14 +320,19 @@ def run_grid(out, scene, params, grid, fixed, jobs, record=None, say=print, warn
     # Threads suffice: each one waits on its FreeFEM process.
     with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
         futures = {pool.submit(one, i): i for i in range(len(combos))}
-        for future in concurrent.futures.as_completed(futures):
-            i = futures[future]
-            try:
-                future.result()
-                say(f"sweep: {label[i]} done", flush=True)
-            except SceneError as e:
-                failures[i] = str(e)
-                warn(f"error: {label[i]}: {e}")
+        try:
+            for future in concurrent.futures.as_completed(futures):
+                i = futures[future]
+                try:
+                    future.result()
+                    say(f"sweep: {label[i]} done", flush=True)
+                except SceneError as e:
+                    failures[i] = str(e)
+                    warn(f"error: {label[i]}: {e}")
+        except BaseException:  # a KeyboardInterrupt (a notebook's): no queued run starts, the running ones stop
+            pool.shutdown(wait=False, cancel_futures=True)
+            children.stop_running()
+            raise
     results = {}
     for i in range(len(combos)):
         if i not in failures:
