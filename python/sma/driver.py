@@ -263,8 +263,10 @@ class Results:
                 raise SceneError(f"{self.path('fields.pvd')} lists no state at t = {name} s "
                                  f"(its times: {' '.join(f'{t:g}' for t, _ in states) or 'none'})")
             path = matches[-1]
-        else:
+        elif isinstance(name, str) and name:
             file = name if name.endswith(".vtu") else f"fields-{name}.vtu"
+        else:
+            raise SceneError(f"fields({name!r}): give an instant ('3-end'), a VTU file of {self.out} or a time in s")
             path = self.path(file)
         state = vtu.read_vtu(path)
         state.time = next((t for t, p in states if os.path.normpath(p) == os.path.normpath(path)), None)
