@@ -249,6 +249,7 @@ def error_checks(tmp, r, f):
         "absent CSV": error_of(lambda: sma.read(radial).frame("points")),
         "absent VTU": error_of(lambda: r.fields("9-never")),
         "time": error_of(lambda: r.fields(7.0)),
+        "no state": error_of(lambda: r.fields(None)),
     }
     cut = os.path.join(tmp, "cut.vtu")
     with open(f.path, "rb") as src, open(cut, "wb") as dst:
@@ -265,6 +266,7 @@ def error_checks(tmp, r, f):
                 "absent CSV": os.path.join(radial, "points.csv") + " is missing",
                 "absent VTU": os.path.join(r.out, "fields-9-never.vtu") + " is missing",
                 "time": os.path.join(r.out, "fields.pvd") + " lists no state at t = 7.0 s",
+                "no state": "fields(None): give an instant ('3-end'), a VTU file of",
                 "cut VTU": cut,
                 "unknown unit": f"{foreign}: no unit is known for the column 'stress_guess'"}
     partial_out = os.path.join(tmp, "partial")

@@ -264,10 +264,9 @@ class Results:
                                  f"(its times: {' '.join(f'{t:g}' for t, _ in states) or 'none'})")
             path = matches[-1]
         elif isinstance(name, str) and name:
-            file = name if name.endswith(".vtu") else f"fields-{name}.vtu"
+            path = self.path(name if name.endswith(".vtu") else f"fields-{name}.vtu")
         else:
             raise SceneError(f"fields({name!r}): give an instant ('3-end'), a VTU file of {self.out} or a time in s")
-            path = self.path(file)
         state = vtu.read_vtu(path)
         state.time = next((t for t, p in states if os.path.normpath(p) == os.path.normpath(path)), None)
         return state
