@@ -8,7 +8,7 @@ install) has no scenes to run: importing it fails, saying so.
 """
 import os
 
-PACKAGE = os.path.dirname(os.path.abspath(__file__))
+PACKAGE = os.path.dirname(os.path.realpath(__file__))  # the physical folder (make python compares pwd -P)
 ROOT = os.path.dirname(os.path.dirname(PACKAGE))
 FF = os.path.join(ROOT, "tools", "ff")
 

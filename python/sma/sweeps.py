@@ -56,9 +56,17 @@ NOT_SWEPT = ("out", "help")  # each run's folder; the option list
 UNIT_WORDS = {"m", "mm", "um", "s", "K", "C", "Pa", "MPa", "GPa", "W", "J", "kg", "N", "deg", "rad"}
 
 
+def is_unit(text):
+    """Whether text is made only of unit symbols (UNIT_WORDS), powers and operators: "W/(m^2 K)"."""
+    words = [w for w in re.split(r"[\s()/*^.\-0-9]+", text) if w]
+    return bool(words) and all(w in UNIT_WORDS for w in words)
+
+
 def unit_of(meaning):
-    """The unit an option's meaning gives (the first parenthesised group made only of unit symbols,
-    powers and operators), or "" (a count, a switch, a name)."""
+    """The unit an option's meaning gives: the first parenthesised group that is a unit
+    ("heat exchange coefficient (W/(m^2 K))"), else a unit before a colon at its start ("Pa: end
+    traction", the beam's and the rings' form); or "" (a count, a switch such as "1: ...", a name)."""
+    lead = re.match(r"([^\s:]+):\s", meaning)
     depth, start = 0, None
     for i, c in enumerate(meaning):
         if c == "(":
@@ -69,10 +77,9 @@ def unit_of(meaning):
             depth -= 1
             if depth == 0:
                 group = meaning[start:i]
-                words = [w for w in re.split(r"[\s()/*^.\-0-9]+", group) if w]
-                if words and all(w in UNIT_WORDS for w in words):
+                if is_unit(group):
                     return group
-    return ""
+    return lead.group(1) if lead and is_unit(lead.group(1)) else ""
 
 
 def value_label(param, value, unit):
