@@ -11,6 +11,9 @@
 #   make paper-scale                                     fit a and the open choices to the paper's statements: docs/paper-scale.md
 #   make ensemble [NP=2] [SEEDS=8] [OUT=dir] [ARGS=...]  Monte Carlo over seeds of sleeve-random-threshold on MPI
 #   make docs                                            regenerate docs/parameter-reference.md (scenes' -help)
+#                                                        and docs/python-api.md (the sma package's docstrings)
+#   make python                                          install the sma package (python/sma) for the user,
+#                                                        editable and offline: `import sma` from anywhere
 SHELL := /bin/bash
 .DEFAULT_GOAL := run
 
@@ -92,13 +95,25 @@ pipe_opt_wall := $(PIPE_RADIUS) -setnumber Ri 0.045 -setnumber lc 0.0005
 sliver_opt_thin := $(SLEEVE_RING) -setnumber eps 1.3e-5
 sliver_opt_degenerate := $(SLEEVE_RING) -setnumber eps 1e-8
 
-.PHONY: run test figures bench reference paper-scale ensemble docs deps plugin meshes clean check-scene sweep
+.PHONY: run test figures bench reference paper-scale ensemble docs deps plugin meshes clean check-scene sweep python
 # The scenes behind the paper's figures (docs/figures.md), run at their defaults by make figures.
 FIGURE_SCENES := beam sleeve-circular sleeve-circular-single sleeve-circular-gvar sleeve-offset \
                  sleeve-elliptic sleeve-elliptic-friction sleeve-random-threshold
 
 deps:
 	@tools/install-deps.sh
+
+# The sma package (python/sma) for /usr/bin/python3, editable (the checkout's own files: an edit is
+# seen at once, and the package finds this checkout's scenes), with Debian's pip and setuptools,
+# offline; --break-system-packages because Debian marks its Python externally managed (PEP 668):
+# a --user install with no dependencies touches only ~/.local (docs/parameters.md, "The Python
+# package"). Skipped when `import sma` from another folder already gives this checkout.
+python: deps
+	@here=$$(pwd -P); cd / && if [ "$$($(PYTHON) -c 'import sma; print(sma.ROOT)' 2>/dev/null)" != "$$here" ]; then \
+	  cd "$$here" && PIP_ROOT_USER_ACTION=ignore $(PYTHON) -m pip install --user --break-system-packages --no-index \
+	    --no-build-isolation --no-deps --disable-pip-version-check -q -e python/ > python/install.log 2>&1 \
+	  || { cat python/install.log; echo "error: installing the sma package (python/) failed (python/install.log)" >&2; exit 1; }; \
+	  rm -f python/install.log; echo "installed the sma package for $$(id -un): import sma runs $$here"; fi
 
 plugin: deps $(PLUGIN) $(FASTCLOCK) $(RESULTS_TOOL) $(OOMGUARD)
 $(RESULTS_TOOL): plugin/results_tool.cpp plugin/core/files.hpp
@@ -163,12 +178,12 @@ RUN_PLOT = $(if $(wildcard tools/plot_$(SCENE).py),$(PYTHON) tools/plot_$(SCENE)
 # a `$(...)` in it is a character, not a command (docs/errors.md). run_scene.py draws the figures
 # from the folder the run wrote (a -out among ARGS included).
 run: export RUN_ARGS := $(value ARGS)
-run: check-scene plugin meshes
+run: check-scene plugin meshes python
 	@$(PYTHON) tools/run_scene.py $(RUN_SCRIPT) $(RUN_RESULTS) $(RUN_PLOT)
 
 # A checkout copied or moved elsewhere keeps a build/CMakeCache.txt naming the old folder, which
 # cmake refuses: such a build/ is another checkout's and is rebuilt from scratch.
-test: plugin meshes
+test: plugin meshes python
 	@if [ -f build/CMakeCache.txt ] && ! grep -qxF "CMAKE_HOME_DIRECTORY:INTERNAL=$$(pwd -P)" build/CMakeCache.txt; then \
 	  echo "build/ was configured for another folder ($$(sed -n 's/^CMAKE_HOME_DIRECTORY:INTERNAL=//p' build/CMakeCache.txt)): rebuilding it"; \
 	  rm -rf build; fi
@@ -193,7 +208,7 @@ sweep: export SWEEP_VALUES := $(value VALUES)
 sweep: export SWEEP_ARGS := $(value ARGS)
 sweep: export SWEEP_JOBS := $(or $(value JOBS),2)
 sweep: export SWEEP_DIR := $(if $(filter command line environment environment override override,$(origin OUT)),$(value OUT),$(SWEEP_OUT_DEFAULT))
-sweep: check-scene plugin meshes
+sweep: check-scene plugin meshes python
 	@set -f; if [ -z "$$SWEEP_PARAM" ] || [ -z "$$SWEEP_VALUES" ]; then \
 	  echo "error: make sweep needs PARAM=<option without its dash> and VALUES='<v1> <v2> ...'" >&2; exit 2; fi; \
 	  $(PYTHON) tools/sweep.py "$$SWEEP_SCENE" "$$SWEEP_PARAM" --env-values SWEEP_VALUES --jobs "$$SWEEP_JOBS" \
@@ -246,9 +261,11 @@ figures: test
 	@$(PYTHON) tools/figures.py
 
 # Every option of every scene, variant, benchmark and the ensemble, as each prints them with
-# -help tsv (tools/param_reference.py says how; about 1 s).
+# -help tsv (tools/param_reference.py says how; about 1 s); the sma package's API page from its
+# docstrings (tools/python_api.py).
 docs: plugin
 	@$(PYTHON) tools/param_reference.py
+	@$(PYTHON) tools/python_api.py
 
 clean:
 	rm -rf build plugin/build meshes/*.msh results

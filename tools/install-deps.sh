@@ -10,8 +10,11 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 # python3-getfem is used only by make bench and tests/getfem_lame_test.py (tools/getfem_lame.py:
 # ring-lame solved by GetFEM, the independent solver our pressure and speed are compared with):
 # 16.7 MB with libgetfem5 and libqhull8.0, plus python3-scipy (62 MB) where it is not installed yet.
+# python3-pandas, python3-pip, python3-setuptools and python3-wheel: the sma package (python/sma,
+# `make python`: an editable install, offline, by Debian's pip and setuptools; its DataFrames).
 packages="freefem++ libfreefem++-dev gmsh libeigen3-dev libgtest-dev libsiconos-numerics-dev cmake make g++
-python3-matplotlib python3-numpy python3-vtk9 openmpi-bin python3-getfem"
+python3-matplotlib python3-numpy python3-vtk9 openmpi-bin python3-getfem python3-pandas python3-pip
+python3-setuptools python3-wheel"
 
 missing=""
 for p in $packages; do

@@ -31,21 +31,17 @@ import concurrent.futures
 import glob
 import json
 import os
-import re
 import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "python"))  # this checkout's sma package (python/sma)
+from sma.helptsv import parse_tsv  # noqa: E402,F401  (the one parser of -help tsv)
 OUTPUT = os.path.join(ROOT, "docs", "parameter-reference.md")
 # (glob, kind), in the order of the file's sections.
 SCRIPT_GLOBS = [("edp/scenes/*.edp", "scene"), ("edp/variants/*.edp", "variant"),
                 ("edp/bench/*.edp", "bench"), ("edp/ensemble/*.edp", "ensemble")]
-HEADER = "option\ttype\tdefault\tmeaning"
-TYPES = ("int", "real", "string")
 UNDOCUMENTED = "(undocumented)"
-# FreeFEM's exit(0) trailer (tools/ff drops it; mpiexec does not).
-TRAILER = re.compile(r"^(  current line = \d+( mpirank \d+ / \d+)?| call .* at  line \d+|exit\(0\)|"
-                     r" err code 0 ,  mpirank \d+)$")
 TIMEOUT = 120  # s; a script that does not stop in CheckOptions would run its whole computation
 
 
@@ -68,33 +64,6 @@ def help_command(path, kind, fmt="tsv"):
         return ["mpiexec", "--oversubscribe", "-np", "1", "FreeFem++-mpi", "-nw", "-ne", "-v", "0", path] \
             + help_args, env
     return [os.path.join(ROOT, "tools", "ff"), path] + help_args, None
-
-
-def parse_tsv(name, text):
-    """The options of one `-help tsv` output: [{"name", "type", "default", "meaning"}]. Fails
-    (ValueError naming the script) on anything but the header, rows, and FreeFEM's exit trailer."""
-    lines = text.split("\n")
-    while lines and lines[-1] == "":
-        lines.pop()
-    if not lines or lines[0] != HEADER:
-        raise ValueError(f"{name}: -help tsv did not start with the header line {HEADER!r}: "
-                         f"{text.strip()[-400:]!r}")
-    options, seen = [], set()
-    i = 1
-    while i < len(lines) and not TRAILER.match(lines[i]):
-        fields = lines[i].split("\t")
-        if len(fields) != 4 or not fields[0].startswith("-") or fields[1] not in TYPES:
-            raise ValueError(f"{name}: -help tsv line {i + 1} is not 'option<TAB>type<TAB>default"
-                             f"<TAB>meaning': {lines[i]!r}")
-        if fields[0] in seen:
-            raise ValueError(f"{name}: option {fields[0]} listed twice")
-        seen.add(fields[0])
-        options.append(dict(zip(("name", "type", "default", "meaning"), fields)))
-        i += 1
-    rest = [line for line in lines[i:] if not TRAILER.match(line)]
-    if rest:
-        raise ValueError(f"{name}: unexpected lines after the options: {rest[:5]!r}")
-    return options
 
 
 def read_options(entry):

@@ -32,6 +32,7 @@ import matplotlib.tri as mtri  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from units import celsius  # noqa: E402
+from sma.plotting import save  # noqa: E402,F401  (every plot tool's PNGs: a temporary name, then renamed)
 
 # Curves closer than this fraction of the axis span at every step are drawn as one legend entry:
 # 1 % of a 6-inch axis is about two line widths, too close to tell apart at reading size.
@@ -59,16 +60,6 @@ def fields_time(path):
     with open(path) as f:
         first = f.readline()
     return first.lstrip("# ").split(";")[0].strip()
-
-
-def save(fig, path, dpi, tight=False):
-    """Writes the PNG under a temporary name, then renames it: never a half-drawn file (every
-    plot tool's figures go through here). tight: crop to the drawn area (bbox_inches="tight")."""
-    partial = path[:-len(".png")] + ".partial.png"
-    results_io.record(path)  # listed in the results folder's manifest before it exists
-    fig.savefig(partial, dpi=dpi, **({"bbox_inches": "tight"} if tight else {}))
-    plt.close(fig)
-    os.replace(partial, path)
 
 
 # ---- The four phases of the curve ----

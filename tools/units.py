@@ -1,9 +1,10 @@
-"""Units: the one place of the Celsius offset on the Python side (edp/lib/units.idp is the
-scripts'). Every data file (CSV, VTU, JSON) is in SI units, temperatures in kelvin; the pictures
-and the console in degrees C and MPa (docs/outputs.md)."""
+"""tools/units.py: the command-line tools' name for sma.units (python/sma/units.py, where the code
+and its documentation are). This checkout's package is put first on the path, so that the tools
+run this checkout's code even when another checkout is the one installed for the user."""
+import os
+import sys
 
-KELVIN_AT_0C = 273.15
-
-
-def celsius(kelvin):
-    return kelvin - KELVIN_AT_0C
+_PYTHON = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python")
+if _PYTHON not in sys.path:
+    sys.path.insert(0, _PYTHON)
+from sma.units import *  # noqa: E402,F401,F403

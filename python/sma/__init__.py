@@ -1,0 +1,26 @@
+"""sma: run the SMA coupling-sleeve scenes of this repository from Python and read what they wrote.
+
+    import sma
+    out = sma.run("sleeve-radial", "results/x", g=1000, steps=300)   # the absolute folder
+    r = sma.read(out)
+    r.summary["final_pressure_mean"]          # summary.json as a dict
+    r.frame("history")                        # history.csv as a DataFrame: t_s, pressure_mean_Pa, ...
+    f = r.fields("3-end")                     # a VTU: f.points, f.triangles, f.point_data, f.cell_data
+    table = sma.sweep("sleeve-radial", {"interference": [2e-4, 5e-4], "g": [250, 1000]},
+                      fixed={"steps": 300}, out="results/sweeps/lab")
+    sma.plot(table, "final_pressure_mean_Pa")
+
+Installed editable for the user by `make python` (docs/parameters.md says how and why); it runs
+the scenes of the checkout it lives in (sma.ROOT) through tools/ff, whatever the working
+directory. docs/python-api.md lists every public function (generated from these docstrings);
+docs/outputs.md every file, column and unit.
+"""
+from .driver import Results, check_option, options, read, read_csv, run, scenes, script
+from .errors import SceneError
+from .frames import frame
+from .repository import FF, ROOT
+from .sweeps import plot, read_sweep, sweep
+from .vtu import Fields, read_pvd, read_vtu
+
+__all__ = ["run", "read", "Results", "options", "scenes", "script", "check_option", "read_csv", "frame",
+           "read_vtu", "read_pvd", "Fields", "sweep", "read_sweep", "plot", "SceneError", "ROOT", "FF"]

@@ -1,0 +1,165 @@
+"""Reading back what a scene wrote (summary.json, the CSVs), for the plot tools: a missing, cut or
+damaged file is named in one error line, never a Python traceback (issue 26: files are trusted).
+And the results folder's ownership for the Python tools that write into one: record() lists a
+file in the folder's manifest, claim() takes a folder by the scenes' own rules (plugin/core/
+files.hpp, through plugin/build/sma-results: one implementation).
+
+    from sma.results_io import ResultsError, guard, read_csv, read_json
+    guard(main)   # runs main(); a ResultsError prints "error: ..." and exits 1
+"""
+import csv
+import json
+import math
+import os
+import subprocess
+import sys
+
+from .repository import ROOT
+
+RESULTS_TOOL = os.path.join(ROOT, "plugin", "build", "sma-results")
+
+
+def results_tool(verb, *words):
+    """Runs plugin/build/sma-results VERB WORDS...; a ResultsError with its error line if it fails."""
+    if not os.access(RESULTS_TOOL, os.X_OK):
+        raise ResultsError(f"{RESULTS_TOOL} is not built: run 'make plugin'")
+    done = subprocess.run([RESULTS_TOOL, verb, *words], capture_output=True, text=True)
+    if done.returncode != 0:
+        message = done.stderr.strip().splitlines()
+        raise ResultsError(message[-1][len("error: "):] if message and message[-1].startswith("error: ")
+                           else f"sma-results {verb} {words[0]} failed (exit {done.returncode})")
+
+
+def record(path):
+    """Lists `path` (a file a tool is about to write) in the manifest of the nearest results folder
+    above it, as the scenes do (plugin/core/files.hpp record_result): a later run of the folder
+    then replaces it, and refuses nothing of ours. Outside a results folder nothing is recorded
+    (docs/variants' figures)."""
+    results_tool("record", os.path.abspath(path))
+
+
+def claim(folder, scene):
+    """Takes `folder` for this process's writing, as a scene takes its -out: refused (ResultsError,
+    nothing touched) when it holds anything its manifest does not list or another run holds it;
+    else what an earlier run listed there is removed and a manifest of `scene` started. The lock
+    goes with release(folder) or this process's end (a later run finds it stale)."""
+    results_tool("claim", folder, scene, str(os.getpid()))
+
+
+def release(folder):
+    """Removes this process's lock of `folder` (taken by claim)."""
+    subprocess.run([RESULTS_TOOL, "release", folder, str(os.getpid())], capture_output=True)
+
+
+class ResultsError(Exception):
+    """A results file that is missing, cut or damaged; the message names it."""
+
+
+def opened(path, **kwargs):
+    """open(path, **kwargs) of a results file, or a ResultsError naming it: missing, a directory, a
+    device or a pipe (whose read would block or never end), or unreadable."""
+    if os.path.exists(path) and not os.path.isfile(path) and not os.path.isdir(path):
+        raise ResultsError(f"{path} is not a regular file (a device or a pipe), not the run's file")
+    try:
+        return open(path, **kwargs)
+    except FileNotFoundError:
+        raise ResultsError(f"{path} is missing (the run did not finish, or wrote elsewhere)") from None
+    except IsADirectoryError:
+        raise ResultsError(f"{path} is a directory, not the run's file") from None
+    except OSError as e:
+        raise ResultsError(f"{path} cannot be read ({e.strerror})") from None
+
+
+def read_json(path):
+    """The object of a JSON file (a summary.json): a dict, or a ResultsError naming the file."""
+    def no_constant(word):  # NaN, Infinity: no JSON the scenes write holds them
+        raise ValueError(f"'{word}' is not a JSON number")
+
+    def no_repeat(pairs):  # a key given twice: json keeps the last one without a word
+        keys = [k for k, _ in pairs]
+        repeated = sorted({k for k in keys if keys.count(k) > 1})
+        if repeated:
+            raise ValueError(f"the key {repeated[0]!r} is given twice")
+        return dict(pairs)
+
+    def no_huge(text):  # an integer beyond a double is no value the scenes write
+        value = int(text)
+        if abs(value) > 1.7976931348623157e308:
+            raise ValueError(f"the number {text[:20]}... is beyond a double")
+        return value
+    try:
+        with opened(path, encoding="utf-8") as f:
+            value = json.load(f, parse_constant=no_constant, object_pairs_hook=no_repeat, parse_int=no_huge)
+    except (ValueError, UnicodeDecodeError, RecursionError) as e:  # JSONDecodeError is a ValueError
+        raise ResultsError(f"{path} is damaged ({type(e).__name__}: {str(e)[:200]}): run the scene again") from None
+    if not isinstance(value, dict):
+        raise ResultsError(f"{path} is damaged (not a JSON object): run the scene again")
+    if not isinstance(value.get("parameters", {}), dict):
+        raise ResultsError(f"{path} is damaged (its parameters are not a JSON object): run the scene again")
+    return value
+
+
+def read_csv(path, skip_comment=True):
+    """{column: [float]} of a CSV with a header line (`#` lines skipped): every row must have the
+    header's number of fields, every field a finite or nan number; else a ResultsError naming the
+    file, its line and its column."""
+    try:
+        # utf-8-sig: a byte-order mark (an editor's) is not part of the first column's name
+        with opened(path, newline="", encoding="utf-8-sig") as f:
+            lines = [(number, ln) for number, ln in enumerate(f, 1) if not (skip_comment and ln.startswith("#"))]
+    except UnicodeDecodeError as e:
+        raise ResultsError(f"{path} is damaged ({e}): run the scene again") from None
+    if not lines:
+        raise ResultsError(f"{path} has no header line")
+    header = next(csv.reader([lines[0][1]]))
+    repeated = sorted({name for name in header if header.count(name) > 1})
+    if repeated:
+        raise ResultsError(f"{path}: the column {repeated[0]} is named twice in the header (an edited file?)")
+    rows = []
+    for number, line in lines[1:]:
+        if not line.strip():
+            continue
+        fields = next(csv.reader([line]))
+        if len(fields) != len(header):
+            raise ResultsError(f"{path}: line {number} has {len(fields)} fields, the header {len(header)} "
+                               "(a cut or damaged file: run the scene again)")
+        row = []
+        for name, text in zip(header, fields):
+            try:
+                value = float(text)
+            except ValueError:
+                raise ResultsError(f"{path}: line {number}, column {name}: '{text}' is not a number") from None
+            if math.isinf(value):
+                raise ResultsError(f"{path}: line {number}, column {name}: '{text}' is not finite")
+            row.append(value)
+        rows.append(row)
+    if not rows:
+        raise ResultsError(f"{path} has no data rows")
+    columns = {name: [r[k] for r in rows] for k, name in enumerate(header)}
+    # The step and the time index every row: a nan there (a value a field may hold) is damage.
+    for name in ("step", "t"):
+        bad = next((i for i, v in enumerate(columns.get(name, [])) if math.isnan(v)), None)
+        if bad is not None:
+            raise ResultsError(f"{path}: data row {bad + 1}, column {name}: nan is not a {name} (a damaged file)")
+    return columns
+
+
+def guard(main):
+    """Runs main(); a ResultsError, or a file that cannot be written (a full disk, a file-size
+    limit), ends the process with its one error line and exit code 1."""
+    try:
+        main()
+    except ResultsError as e:
+        print(f"error: {e}", file=sys.stderr)
+        sys.exit(1)
+    except OSError as e:
+        where = f" {e.filename}" if e.filename else ""
+        print(f"error: cannot write{where}: {e.strerror or e}", file=sys.stderr)
+        sys.exit(1)
+    except (KeyError, TypeError, ValueError, IndexError) as e:
+        # Well-formed files whose content is not what the scenes write (a number given as a string,
+        # a key missing): one line naming the value, not a traceback. (A bug of the tool shows the
+        # same way; the text says which value.)
+        print(f"error: the results read do not have the form the scenes write ({type(e).__name__}: {e}): "
+              "an edited or foreign summary.json or CSV? run the scene again", file=sys.stderr)
+        sys.exit(1)

@@ -1,0 +1,586 @@
+"""Parameter sweeps: a scene run over a grid of option values, in parallel, into one folder, with a
+table of the runs' key figures and overlay figures (tools/sweep.py and make sweep are the command
+line of the one-parameter case; sma.sweep() the Python entry, one or several parameters).
+
+    import sma
+    table = sma.sweep("sleeve-radial", {"interference": [2e-4, 5e-4], "g": [250, 1000]},
+                      fixed={"steps": 300}, jobs=2, out="results/sweeps/lab")
+    table[["interference_m", "g_W/(m^2 K)", "final_pressure_mean_Pa"]]
+
+The folder (default results/sweeps/<scene>-<param>[-<param>...]) is taken as a scene takes its
+-out (results_io.claim: a folder holding files the suite did not write is refused untouched; an
+earlier sweep's runs, table and figures go first). It holds each run's own folder, named
+<param>=<value> for one parameter and <p1>=<v1>,<p2>=<v2> for several; table.csv (one row per
+finished run: the parameters' values as given, then the key figures, each column named with its
+unit); sweep.json (what ran, each run's folder and status); and the figures: one parameter,
+force-temperature.png and force-time.png (one curve per value); several, force-temperature.png
+with one panel per fixed value of the other parameters (the first parameter's curves overlaid)
+and final-pressure.png (the final mean pressure against the first parameter, one line per fixed
+value of the others). A run that fails stops nothing else; it is named at the end.
+"""
+import concurrent.futures
+import csv
+import itertools
+import json
+import os
+import re
+
+import numpy as np
+
+from . import children, driver, results_io
+from .errors import SceneError
+from .plotting import pyplot, save
+from .units import KELVIN_AT_0C
+
+# The key figures of a sleeve summary.json, in table order: (key, column named with its unit).
+# The times come from history.csv (the t of the step's row); iteration maxima are appended after
+# them in the summary's order (every key ending in _iterations_max or _sweeps_max).
+KEY_FIGURES = [("first_contact_step", "first_contact_step"), ("first_contact_time", "first_contact_time_s"),
+               ("T_inner_first_contact", "T_inner_first_contact_K"),
+               ("austenite_step", "austenite_step"), ("austenite_time", "austenite_time_s"),
+               ("T_inner_austenite", "T_inner_austenite_K"),
+               ("final_pressure_mean", "final_pressure_mean_Pa"), ("peak_pressure_mean", "peak_pressure_mean_Pa"),
+               ("peak_step", "peak_step"), ("final_pressure_non_uniformity", "final_pressure_non_uniformity"),
+               ("lame_pressure", "lame_pressure_Pa")]  # (the radial model: Lame's closed form at the end)
+TRAILING_FIGURES = [("unconverged_loops", "unconverged_loops"), ("wall_seconds", "wall_s")]
+STEP_TIMES = {"first_contact_time": "first_contact_step", "austenite_time": "austenite_step"}
+COINCIDE = 1e-3  # relative to a curve's largest |pressure|: curves closer share a legend entry
+ZOOM_PAST_AUSTENITE = 1.25  # the transient panel ends a quarter past the last austenite time
+# Folders are named <param>=<value>: a value must not leave DIR.
+BAD_VALUE_CHARACTERS = ("/", "\0")
+NOT_SWEPT = ("out", "help")  # each run's folder; the option list
+
+
+# The unit symbols an option's meaning may give in parentheses: "Young's modulus (Pa)",
+# "heat exchange coefficient (W/(m^2 K))"; a group with any other word ("(0 included: ...)") is prose.
+UNIT_WORDS = {"m", "mm", "um", "s", "K", "C", "Pa", "MPa", "GPa", "W", "J", "kg", "N", "deg", "rad"}
+
+
+def is_unit(text):
+    """Whether text is made only of unit symbols (UNIT_WORDS), powers and operators: "W/(m^2 K)"."""
+    words = [w for w in re.split(r"[\s()/*^.\-0-9]+", text) if w]
+    return bool(words) and all(w in UNIT_WORDS for w in words)
+
+
+def unit_of(meaning):
+    """The unit an option's meaning gives: the first parenthesised group that is a unit
+    ("heat exchange coefficient (W/(m^2 K))"), else a unit before a colon at its start ("Pa: end
+    traction", the beam's and the rings' form); or "" (a count, a switch such as "1: ...", a name)."""
+    lead = re.match(r"([^\s:]+):\s", meaning)
+    depth, start = 0, None
+    for i, c in enumerate(meaning):
+        if c == "(":
+            if depth == 0:
+                start = i + 1
+            depth += 1
+        elif c == ")" and depth > 0:
+            depth -= 1
+            if depth == 0:
+                group = meaning[start:i]
+                if is_unit(group):
+                    return group
+    return lead.group(1) if lead and is_unit(lead.group(1)) else ""
+
+
+def value_label(param, value, unit):
+    """A legend entry: "-interference 5e-05 m" (the option as typed, with its unit)."""
+    return f"-{param} {value}" + (f" {unit}" if unit else "")
+
+
+def step_time(history, step):
+    """The time t (s) at the end of `step` (history.csv's row), or None (null: never, or no row)."""
+    if history is None or step is None or step < 1 or "step" not in history:
+        return None
+    rows = np.nonzero(history["step"] == step)[0]
+    return float(history["t"][rows[0]]) if len(rows) else None
+
+
+def figures_of(summary, history):
+    """{key: value} of one run's key figures (the times from history.csv)."""
+    figures = dict(summary)
+    for time_key, step_key in STEP_TIMES.items():
+        if step_key in summary:
+            figures[time_key] = step_time(history, summary[step_key])
+    return figures
+
+
+def flattened_numbers(summary):
+    """(column, value) of every number in a summary without the sleeve's key figures: the top
+    level's, then those of its lists of named entries as <name>.<key> (beam's meshes, ring-lame's
+    levels), parameters excluded (they are the options)."""
+    out = []
+    for key, value in summary.items():
+        if key == "parameters":
+            continue
+        if isinstance(value, (int, float)) and not isinstance(value, bool):
+            out.append((key, value))
+        elif isinstance(value, list):
+            for k, entry in enumerate(value):
+                if isinstance(entry, dict):
+                    label = entry.get("name", str(k))
+                    out += [(f"{label}.{sub}", v) for sub, v in entry.items()
+                            if isinstance(v, (int, float)) and not isinstance(v, bool)]
+    return out
+
+
+def table_columns(runs):
+    """[(key, column)] of the table: the key figures that any run has, else None (every number)."""
+    keys = set().union(*(r.keys() for r in runs)) if runs else set()
+    if not any(k in keys for k, _ in KEY_FIGURES if k not in STEP_TIMES):
+        return None
+    iterations = []
+    for r in runs:
+        iterations += [k for k in r if (k.endswith("_iterations_max") or k.endswith("_sweeps_max"))
+                       and k not in iterations]
+    return ([(k, c) for k, c in KEY_FIGURES if k in keys] + [(k, k) for k in iterations]
+            + [(k, c) for k, c in TRAILING_FIGURES if k in keys])
+
+
+def table_rows(params, combos, runs):
+    """(header, rows) of table.csv: the parameters' values as given, then each run's key figures
+    (table_columns) or, for a scene without them, every number of its summary. A figure a run
+    lacks (or null: the event never happened) is None."""
+    columns = table_columns(runs)
+    if columns is not None:
+        header = list(params) + [c for _, c in columns]
+        rows = [list(v) + [r.get(k) for k, _ in columns] for v, r in zip(combos, runs)]
+    else:
+        flat = [dict(flattened_numbers(r)) for r in runs]
+        names = []
+        for f in flat:
+            names += [n for n in f if n not in names]
+        header = list(params) + names
+        rows = [list(v) + [f.get(n) for n in names] for v, f in zip(combos, flat)]
+    return header, rows
+
+
+def write_table(path, header, rows):
+    """table.csv (listed in the folder's manifest, written under a temporary name); None is empty."""
+    results_io.record(path)
+    with open(path + ".partial", "w", newline="") as f:
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(header)
+        w.writerows([["" if x is None else x for x in row] for row in rows])
+    os.replace(path + ".partial", path)
+
+
+def same_curve(a, b):
+    """Whether two (t, p) curves agree within COINCIDE of the larger |p| at every time of `a`
+    inside both (b interpolated when the steps differ); the runs must end at the same time."""
+    (ta, pa), (tb, pb) = a, b
+    if abs(ta[-1] - tb[-1]) > 1e-9 * max(abs(ta[-1]), 1e-300):
+        return False
+    pb_on_a = pb if len(ta) == len(tb) and np.array_equal(ta, tb) else np.interp(ta, tb, pb)
+    scale = max(np.abs(pa).max(), np.abs(pb).max(), 1e-300)
+    return bool(np.abs(pa - pb_on_a).max() <= COINCIDE * scale)
+
+
+def coincident_groups(curves):
+    """Indices of `curves` grouped: each curve joins the first group whose first curve it
+    coincides with (same_curve)."""
+    groups = []
+    for i, curve in enumerate(curves):
+        for group in groups:
+            if same_curve(curves[group[0]], curve):
+                group.append(i)
+                break
+        else:
+            groups.append([i])
+    return groups
+
+
+def draw(out, scene, param, values, runs, plt, unit="", fixed=None):
+    """The two overlays of a one-parameter sweep (force-temperature.png, force-time.png); returns
+    (the paths written, the groups of values whose curves coincide)."""
+    histories = [r.history for r in runs]
+    temperature = [(h["T_inner_mean"] - KELVIN_AT_0C, h["pressure_mean"] / 1e6) for h in histories]
+    time = [(h["t"], h["pressure_mean"] / 1e6) for h in histories]
+    groups = coincident_groups(time)
+    labels = [", ".join(value_label(param, values[i], unit) for i in g) + (" (coincide within 0.1 %)" if len(g) > 1 else "")
+              for g in groups]
+    # The options every run shares, in the title: the figure says what was held fixed.
+    held = " ".join(f"-{k} {v}" for k, v in (fixed or {}).items())
+    title = f"{scene}: sweep of -{param}" + (f"\n(all runs: {held})" if held else "")
+    written = []
+
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    for group, label in zip(groups, labels):
+        ax.plot(*temperature[group[0]], lw=1.2, label=label)
+    ax.set_xlabel("mean inner-surface temperature (°C)")
+    ax.set_ylabel("mean contact pressure (MPa)")
+    ax.set_title(title)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    written.append(os.path.join(out, "force-temperature.png"))
+    save(fig, written[-1], 110)
+
+    # Against time: the transient in the main panel, up to a quarter past the last run's austenite
+    # (the whole run when one never turns austenite), the whole run in a small panel beside it.
+    t_end = max(float(h["t"][-1]) for h in histories)
+    austenite = [step_time(r.history, r.summary.get("austenite_step")) for r in runs]
+    zoom = t_end if None in austenite else min(t_end, ZOOM_PAST_AUSTENITE * max(austenite))
+    fig, (ax, whole) = plt.subplots(1, 2, figsize=(10, 4.5), gridspec_kw={"width_ratios": [3, 1]})
+    for group, label in zip(groups, labels):
+        ax.plot(*time[group[0]], lw=1.2, label=label)
+        whole.plot(*time[group[0]], lw=0.8)
+    ax.set_xlim(0, zoom)
+    ax.set_xlabel("time (s): the transient")
+    ax.set_ylabel("mean contact pressure (MPa)")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    whole.axvspan(0, zoom, color="0.9", label="left panel")
+    whole.set_xlabel("time (s): the whole run")
+    whole.set_ylabel("mean contact pressure (MPa)")
+    whole.grid(alpha=0.3)
+    fig.suptitle(title)
+    fig.tight_layout()
+    written.append(os.path.join(out, "force-time.png"))
+    save(fig, written[-1], 110)
+    return written, [[values[i] for i in g] for g in groups]
+
+
+def write_json(path, record):
+    """A JSON record of the folder (listed in its manifest, written under a temporary name)."""
+    results_io.record(path)
+    with open(path + ".partial", "w") as f:
+        json.dump(record, f, indent=2, allow_nan=False)
+    os.replace(path + ".partial", path)
+
+
+def text_of(value):
+    """A parameter value as its folder and table show it: a string as given, a number as Python
+    writes it (5e-05, 500)."""
+    return value if isinstance(value, str) else repr(value.item() if isinstance(value, np.generic) else value)
+
+
+def run_folder(out, params, combo):
+    """The folder of one run: <param>=<value>, or <p1>=<v1>,<p2>=<v2> for several parameters."""
+    return os.path.join(out, ",".join(f"{p}={v}" for p, v in zip(params, combo)))
+
+
+def check_grid(scene, grid, fixed):
+    """Checks a sweep's scene, parameters, values and fixed options before anything runs; returns
+    (params, {param: [value texts]}). Raises SceneError naming the culprit."""
+    driver.script(scene)
+    if not isinstance(grid, dict) or not grid:
+        raise SceneError(f"{scene}: the grid must be a dict {{option name: [values]}} with at least one option, "
+                         f"not {grid!r}")
+    params = list(grid)
+    for param in params:
+        if not isinstance(param, str) or param.startswith("-"):
+            raise SceneError(f"the swept option {param!r}: give its name without its dash")
+        if param in NOT_SWEPT:
+            raise SceneError(f"-{param} cannot be swept (-out is each run's folder, -help lists the options)")
+        driver.check_option(scene, param)
+    for name in fixed:
+        if name in NOT_SWEPT:
+            raise SceneError(f"-{name} cannot be a fixed option of a sweep (each run's folder is inside `out`)")
+        if name in grid:
+            raise SceneError(f"-{name} is swept; do not also give it among the fixed options")
+        driver.check_option(scene, name)
+        driver.word(scene, name, fixed[name])
+    texts = {}
+    for param in params:
+        values = grid[param]
+        if isinstance(values, (str, bytes)) or not hasattr(values, "__iter__"):
+            raise SceneError(f"-{param}: give a list of values, not {values!r}")
+        texts[param] = [text_of(v) for v in values]
+        if not texts[param]:
+            raise SceneError(f"-{param}: the list of values is empty")
+        for t in texts[param]:
+            if not t or any(c in t for c in BAD_VALUE_CHARACTERS) or t in (".", ".."):
+                raise SceneError(f"the value '{t}' of -{param} cannot name a folder ({param}={t})")
+            if t.startswith("--"):
+                raise SceneError(f"the value '{t}' of -{param} looks like a flag: flags go to --jobs/--out (JOBS=, OUT=)")
+        repeated = sorted({t for t in texts[param] if texts[param].count(t) > 1})
+        if repeated:
+            raise SceneError(f"the value(s) {' '.join(repeated)} of -{param} are given twice (one folder each)")
+    for param in params:  # each value against the option's type, before anything runs
+        for v in grid[param]:
+            driver.word(scene, param, v)
+    return params, texts
+
+
+def run_grid(out, scene, params, grid, fixed, jobs, record=None, say=print, warn=None):
+    """Runs every combination of the values of `grid` ({param: [values]}, checked by check_grid)
+    into its folder of `out` (taken by the caller), then publishes table.csv, the figures and
+    sweep.json. `grid`'s values go to the scene as given; their texts (text_of) name the folders
+    and fill the table. Returns (exit status 0, or 1 when a run failed, the record written to
+    sweep.json, the finished runs as [(combo texts, Results)]). `say` and `warn` print the
+    progress and the errors (the command line's console)."""
+    import sys
+    warn = warn or (lambda line: print(line, file=sys.stderr, flush=True))
+    texts = [[text_of(v) for v in grid[p]] for p in params]
+    combos = list(itertools.product(*texts))
+    values = list(itertools.product(*[grid[p] for p in params]))
+    jobs = max(1, min(jobs, os.cpu_count() or 1, len(combos)))
+    folders = [run_folder(out, params, c) for c in combos]
+    label = [" ".join(f"-{p} {v}" for p, v in zip(params, c)) for c in combos]
+    say(f"sweep: {scene} " + " x ".join(f"-{p} over {' '.join(t)}" for p, t in zip(params, texts))
+        + f" ({jobs} at a time) into {out}/", flush=True)
+
+    def one(i):
+        return driver.run(scene, folders[i], **fixed, **dict(zip(params, values[i])))
+
+    failures = {}
+    # Threads suffice: each one waits on its FreeFEM process.
+    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+        futures = {pool.submit(one, i): i for i in range(len(combos))}
+        try:
+            for future in concurrent.futures.as_completed(futures):
+                i = futures[future]
+                try:
+                    future.result()
+                    say(f"sweep: {label[i]} done", flush=True)
+                except SceneError as e:
+                    failures[i] = str(e)
+                    warn(f"error: {label[i]}: {e}")
+        except BaseException:  # a KeyboardInterrupt (a notebook's): no queued run starts, the running ones stop
+            pool.shutdown(wait=False, cancel_futures=True)
+            children.stop_running()
+            raise
+    results = {}
+    for i in range(len(combos)):
+        if i not in failures:
+            try:
+                results[i] = driver.read(folders[i])
+            except SceneError as e:
+                failures[i] = str(e)
+                warn(f"error: {label[i]}: {e}")
+    done = [i for i in range(len(combos)) if i not in failures]
+    header, rows = table_rows(params, [combos[i] for i in done],
+                              [figures_of(results[i].summary, results[i].history) for i in done])
+    write_table(os.path.join(out, "table.csv"), header, rows)
+
+    runs = [results[i] for i in done]
+    drawn = runs and all(r.history is not None and "pressure_mean" in r.history for r in runs)
+    written, groups, note = [], [], None
+    options = driver.options(scene)
+    if drawn:
+        plt = pyplot()
+        if len(params) == 1:
+            unit = unit_of(options[params[0]]["meaning"])
+            written, groups = draw(out, scene, params[0], [combos[i][0] for i in done], runs, plt, unit, fixed)
+        else:
+            written = draw_grid(out, scene, params, [combos[i] for i in done], runs, rows, header, fixed, plt)
+    elif runs:
+        note = f"{scene} writes no history.csv with a contact pressure (pressure_mean): the table only"
+        say(f"sweep: {note}")
+    if len(params) == 1:
+        param = params[0]
+        sweep_record = {
+            "scene": scene, "param": param, "param_meaning": options[param]["meaning"],
+            "values": texts[0], **(record or {"args": [], "options": fixed}), "jobs": jobs,
+            "runs": [{"value": c[0], "out": folders[i], "status": "failed" if i in failures else "done",
+                      **({"error": failures[i]} if i in failures else {})} for i, c in enumerate(combos)],
+            "table": "table.csv", "table_columns": header,
+            "figures": [os.path.basename(p) for p in written],
+            "curves_coinciding_within_0.1_percent": [g for g in groups if len(g) > 1],
+            **({"note": note} if note else {})}
+    else:
+        sweep_record = {
+            "scene": scene, "params": params, "param_meanings": {p: options[p]["meaning"] for p in params},
+            "grid": dict(zip(params, texts)), "options": {k: v if isinstance(v, str) else text_of(v)
+                                                          for k, v in fixed.items()}, "jobs": jobs,
+            "runs": [{"values": dict(zip(params, c)), "out": folders[i],
+                      "status": "failed" if i in failures else "done",
+                      **({"error": failures[i]} if i in failures else {})} for i, c in enumerate(combos)],
+            "table": "table.csv", "table_columns": header,
+            "figures": [os.path.basename(p) for p in written], **({"note": note} if note else {})}
+    write_json(os.path.join(out, "sweep.json"), sweep_record)
+    say(f"sweep: {len(done)} of {len(combos)} runs; table.csv{', figures' if written else ''} "
+        f"and sweep.json in {out}/")
+    if failures:
+        which = (f"-{params[0]} {' '.join(combos[i][0] for i in sorted(failures))}" if len(params) == 1
+                 else "; ".join(label[i] for i in sorted(failures)))
+        warn(f"error: the sweep's run(s) for {which} failed (sweep.json has each error)")
+    return (1 if failures else 0), sweep_record, [(combos[i], results[i]) for i in done]
+
+
+def draw_grid(out, scene, params, combos, runs, rows, header, fixed, plt):
+    """The figures of a sweep of several parameters: force-temperature.png, one panel per fixed
+    value of the other parameters with the first parameter's curves overlaid, and
+    final-pressure.png (plot() of the table). Returns the paths written."""
+    options = driver.options(scene)
+    units = {p: unit_of(options[p]["meaning"]) for p in params}
+    first, others = params[0], params[1:]
+    panels = []
+    for c in combos:
+        if c[1:] not in panels:
+            panels.append(c[1:])
+    held = " ".join(f"-{k} {text_of(v)}" for k, v in fixed.items())
+    columns = min(3, len(panels))
+    lines = -(-len(panels) // columns)
+    fig, axes = plt.subplots(lines, columns, figsize=(4.2 * columns, 3.4 * lines + 0.6), squeeze=False,
+                             sharex=True, sharey=True)
+    for ax, panel in zip(axes.flat, panels):
+        for c, r in zip(combos, runs):
+            if c[1:] == panel:
+                h = r.history
+                ax.plot(h["T_inner_mean"] - KELVIN_AT_0C, h["pressure_mean"] / 1e6, lw=1.2,
+                        label=value_label(first, c[0], units[first]))
+        ax.set_title(", ".join(value_label(p, v, units[p]) for p, v in zip(others, panel)), fontsize=9)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7)
+    for ax in axes.flat[len(panels):]:
+        ax.set_visible(False)
+    for ax in axes[-1]:
+        ax.set_xlabel("mean inner-surface temperature (°C)")
+    for ax in axes[:, 0]:
+        ax.set_ylabel("mean contact pressure (MPa)")
+    fig.suptitle(f"{scene}: sweep of " + " x ".join(f"-{p}" for p in params)
+                 + (f"\n(all runs: {held})" if held else ""), fontsize=10)
+    fig.tight_layout()
+    written = [os.path.join(out, "force-temperature.png")]
+    save(fig, written[-1], 110)
+
+    if "final_pressure_mean_Pa" in header:
+        table = frame_of(scene, params, header, rows, [r.out for r in runs])
+        fig, ax = plt.subplots(figsize=(7, 4.5))
+        plot(table, "final_pressure_mean_Pa", ax=ax)
+        ax.set_title(f"{scene}: final mean contact pressure" + (f"\n(all runs: {held})" if held else ""), fontsize=10)
+        fig.tight_layout()
+        written.append(os.path.join(out, "final-pressure.png"))
+        save(fig, written[-1], 110)
+    return written
+
+
+def parameter_column(scene, param):
+    """The DataFrame's name of a swept option's column: <param>_<unit> with the unit its -help
+    meaning gives (interference_m, g_W/(m^2 K)), the bare name for a count or a switch."""
+    unit = unit_of(driver.options(scene)[param]["meaning"])
+    return f"{param}_{unit}" if unit else param
+
+
+def frame_of(scene, params, header, rows, outs):
+    """The sweep's table as a DataFrame: the parameters (numbers where the option is int or real,
+    named with their units), the key figures of table.csv, and `out`, each run's folder."""
+    import pandas as pd
+    options = driver.options(scene)
+    data = {}
+    for k, name in enumerate(header):
+        column = [row[k] for row in rows]
+        if k < len(params):
+            kind = options[name]["type"]
+            column = [float(v) if kind == "real" else int(v) if kind == "int" else v for v in column]
+            data[parameter_column(scene, name)] = column
+        else:
+            data[name] = [np.nan if v is None else v for v in column]
+    data["out"] = list(outs)
+    table = pd.DataFrame(data)
+    table.attrs["params"] = {p: parameter_column(scene, p) for p in params}
+    return table
+
+
+def plot(table, y="final_pressure_mean_Pa", x=None, by=None, ax=None):
+    """Draws a key figure of a sweep's table against one swept parameter, one line per fixed value
+    of the others: `table` a DataFrame of sweep() (or read_sweep()); `y` a column; `x` a swept
+    parameter's name (default: the first); `by` the parameters that make the lines (default: the
+    others). A column given in Pa is drawn in MPa. Returns the matplotlib Axes (a new figure's
+    unless `ax`). Fails (SceneError) naming an unknown column or parameter."""
+    params = table.attrs.get("params")
+    if not params:
+        raise SceneError("plot() takes the DataFrame of sma.sweep() or sma.read_sweep() (its attrs name the parameters)")
+    x = x or next(iter(params))
+    if x not in params:
+        raise SceneError(f"x = {x!r} is not a swept parameter of this table ({', '.join(params)})")
+    if y not in table.columns:
+        raise SceneError(f"y = {y!r} is not a column of this table ({', '.join(table.columns)})")
+    by = [p for p in params if p != x] if by is None else list(by)
+    unknown = [p for p in by if p not in params or p == x]
+    if unknown:
+        raise SceneError(f"by = {unknown}: not swept parameters other than x ({', '.join(params)})")
+    if ax is None:
+        ax = pyplot().subplots(figsize=(7, 4.5))[1]
+    scale, y_label = (1e-6, y[:-len("_Pa")] + " (MPa)") if y.endswith("_Pa") else (1.0, y)
+    keys = [params[p] for p in by]
+    groups = table.groupby(keys if len(keys) > 1 else keys[0], sort=False) if by else [((), table)]
+    def unit(p):  # the unit in a parameter's column name (interference_m: m)
+        return params[p][len(p) + 1:]
+    for key, part in groups:
+        key = key if isinstance(key, tuple) else (key,)
+        part = part.sort_values(params[x])
+        label = ", ".join(value_label(p, f"{v:g}" if isinstance(v, (int, float)) else v, unit(p)) for p, v in zip(by, key))
+        ax.plot(part[params[x]], part[y] * scale, "o-", lw=1.2, label=label or None)
+    ax.set_xlabel(f"-{x}" + (f" ({unit(x)})" if unit(x) else ""))
+    ax.set_ylabel(y_label)
+    ax.grid(alpha=0.3)
+    if by:
+        ax.legend(fontsize=8)
+    return ax
+
+
+def sweep(scene, grid, fixed=None, jobs=2, out=None):
+    """Runs `scene` over every combination of the values of `grid` ({option name: [values]}, one
+    or several options), with the options `fixed` ({name: value}) in every run, `jobs` runs at a
+    time (at most the cores), into `out` (default results/sweeps/<scene>-<param>[-<param>...];
+    relative to the repository root). Everything is checked before anything runs (SceneError
+    naming the scene, option or value). Writes table.csv, sweep.json and the figures (module
+    docstring) and returns the table as a pandas DataFrame: one row per run, the parameters
+    (named with their units: interference_m, g_W/(m^2 K)), the key figures (first_contact_time_s,
+    final_pressure_mean_Pa, ...), and `out`, the run's folder (absolute); attrs["out"] is the
+    sweep's folder, attrs["figures"] its figures. When a run fails the others still run and are
+    published; then a SceneError names the failed runs (its `table` attribute holds the others')."""
+    fixed = dict(fixed or {})
+    params, texts = check_grid(scene, grid, fixed)
+    grid = {p: list(grid[p]) for p in params}
+    if not isinstance(jobs, int) or isinstance(jobs, bool) or jobs < 1:
+        raise SceneError(f"jobs = {jobs!r}: a whole number of runs at a time >= 1")
+    out = driver.folder(out if out is not None else os.path.join("results", "sweeps", "-".join([scene] + params)))
+    try:
+        results_io.claim(out, "sweep " + scene)
+    except results_io.ResultsError as e:
+        raise SceneError(str(e)) from None
+    try:
+        status, record, done = run_grid(out, scene, params, grid, fixed, jobs,
+                                        record={"args": [w for k, v in fixed.items() for w in (f"-{k}", text_of(v))],
+                                                "options": {k: text_of(v) for k, v in fixed.items()}},
+                                        say=lambda *a, **k: None, warn=lambda line: None)
+    finally:
+        results_io.release(out)
+    table = read_sweep(out)
+    if status:
+        failed = [r for r in record["runs"] if r["status"] == "failed"]
+        error = SceneError(f"{len(failed)} of {len(record['runs'])} runs of the sweep in {out} failed:\n"
+                           + "\n".join(f"  {r['out']}: {r['error'].splitlines()[0]}" for r in failed))
+        error.table = table
+        raise error
+    return table
+
+
+def read_sweep(out):
+    """The table of a finished sweep in `out` (its table.csv and sweep.json) as the DataFrame sweep()
+    returns. Fails (SceneError) naming the folder or file when it holds no finished sweep."""
+    out = driver.folder(out)
+    try:
+        record = results_io.read_json(os.path.join(out, "sweep.json"))
+    except results_io.ResultsError as e:
+        raise SceneError(str(e)) from None
+    params = record.get("params", [record.get("param")])
+    path = os.path.join(out, "table.csv")
+    try:
+        with results_io.opened(path, newline="") as f:
+            lines = list(csv.reader(f))
+    except results_io.ResultsError as e:
+        raise SceneError(str(e)) from None
+    if not lines or lines[0][:len(params)] != params:
+        raise SceneError(f"{path} does not start with the swept parameters {params} (a damaged or foreign table)")
+    header, body = lines[0], lines[1:]
+    done = [r for r in record["runs"] if r["status"] == "done"]
+    if len(body) != len(done) or any(len(row) != len(header) for row in body):
+        raise SceneError(f"{path}: {len(body)} rows for {len(done)} finished runs, or a row of the wrong length "
+                         "(a damaged table: run the sweep again)")
+    rows = []
+    for number, row in enumerate(body, 2):
+        converted = list(row[:len(params)])
+        for name, text in zip(header[len(params):], row[len(params):]):
+            try:
+                converted.append(None if text == "" else int(text) if re.fullmatch(r"-?\d+", text) else float(text))
+            except ValueError:
+                raise SceneError(f"{path}: line {number}, column {name}: '{text}' is not a number") from None
+        rows.append(converted)
+    table = frame_of(record["scene"], params, header, rows, [r["out"] for r in done])
+    table.attrs["out"] = out
+    table.attrs["figures"] = [os.path.join(out, f) for f in record.get("figures", [])]
+    return table
