@@ -53,6 +53,8 @@ import time
 
 import numpy as np
 
+import results_io
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TEND = 30.0
 STEPS_PER_ELEMENT = 7.5
@@ -82,10 +84,13 @@ def run(script, out, args):
     proc = subprocess.run(command, cwd=ROOT, capture_output=True, text=True)
     wall = time.perf_counter() - start
     if proc.returncode != 0:
-        with open(os.path.join(out, "run.log"), "w") as f:
+        # Beside the run's folder, not in it, and listed in the enclosing results folder's manifest:
+        # a file of ours inside a folder the scene did not claim would make the next run refuse it.
+        log = out.rstrip(os.sep) + ".log"
+        results_io.record(log)
+        with open(log, "w") as f:
             f.write(proc.stdout + proc.stderr)
-        sys.exit(f"reference_curve: {' '.join(command[1:])} failed (exit {proc.returncode}); "
-                 f"its output: {os.path.join(out, 'run.log')}")
+        sys.exit(f"reference_curve: {' '.join(command[1:])} failed (exit {proc.returncode}); its output: {log}")
     path = os.path.join(out, "history.csv")
     try:
         with open(path, newline="") as f:
