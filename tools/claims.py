@@ -5,7 +5,7 @@ on/off scheme (results/claims/onoff-<scene>/), with a verdict and, for each disa
 that tests an explanation (results/claims/<name>/) or "open". tools/figures.py puts the table at
 the head of docs/figures.md.
 
-Usage: tools/claims.py --run   the on/off and explanation runs (make figures; about 70 s), one at
+Usage: tools/claims.py --run   the on/off and explanation runs (make figures; about 3 min), one at
                                a time, each failure named with its log
        (tools/figures.py imports table())
 The measures are those of tools/paper_scale_fit.py (docs/paper-scale.md), read from these runs.
