@@ -16,6 +16,10 @@ statements that the fit found them to agree with (section 4; docs/paper-scale.md
     on the major axis, and below the circular case's;
   - S5, sleeve-offset (Fig. 22-23, half-ring coarse mesh): the final pressure uniform within 5 %
     and within 1 % of the circular case's level;
+    and, with point A at the tangent point held rigidly (-anchorpoint tangent -anchor 1e3), the
+    paper's account of it: the near side and the top touch within a step of the centred ring's
+    first contact (a zero-force stage everywhere), while the soft spring on the top lets the near
+    side touch at step 1;
   - S9, sleeve-random-threshold (Fig. 34): the reversion starts within 2.5 K of the paper's -25 C.
 And the reduced scale is a preset: -scale reduced gives back the printed a = 300 and the meshes'
 55 um interference. Records results/checks/paper_scale.json.
@@ -114,6 +118,31 @@ def main():
     figures["offset"] = {"non_uniformity": os_["final_pressure_non_uniformity"],
                          "final_over_circular": os_["final_pressure_mean"] / final,
                          "step_fallbacks": os_.get("step_fallbacks", 0)}
+
+    # Fig. 21-24, the paper's account (4.3: "the deformed ring coincides at one instant with the
+    # pipe, and contact occurs then at every point"): point A where the offset ring touches the
+    # pipe (the offset equals the interference), held rigidly. The ring dilates about A and meets
+    # the pipe everywhere at once, when its dilatation reaches the interference: the instant the
+    # centred ring touches (an independent run at the same time step).
+    def first_contact(run, point):
+        return next(int(r["step"]) for r in run["points"] if float(r[f"pressure_{point}_Pa"]) > 0)
+    coarse = ["-quiet", "1", "-vtkevery", "0", "-steps", "750"]
+    tangent = sleeve_outputs(run_scene("sleeve-offset", "paper-offset-tangent", *PAPER, *coarse, "-mesh",
+                                       "meshes/sleeve-half-coarse.msh", "-anchorpoint", "tangent", "-anchor", "1e3"))
+    centred = sleeve_outputs(run_scene("sleeve-circular", "paper-centred-coarse", *PAPER, *coarse, "-mesh",
+                                       "meshes/sleeve-coarse.msh"))
+    near, top, soft_near = first_contact(tangent, "near"), first_contact(tangent, "top"), first_contact(off, "near")
+    ring = first_contact(centred, "x_axis")
+    ts = tangent["summary"]
+    check(near >= 3 and abs(near - ring) <= 1 and abs(top - ring) <= 1 and soft_near == 1
+          and ts["final_pressure_non_uniformity"] <= 0.05 and abs(ts["final_pressure_mean"] / final - 1) <= 0.01,
+          f"S5 with point A at the tangent point, fixed: the near side and the top first touch at steps {near} and "
+          f"{top}, the centred ring at {ring} (a zero-force stage; with the soft spring on the top: the near side "
+          f"at step {soft_near}); final uniform within {100 * ts['final_pressure_non_uniformity']:.1f} %, "
+          f"{100 * (ts['final_pressure_mean'] / final - 1):+.2f} % from the circular case's")
+    figures["offset_tangent_anchor"] = {"first_contact_near": near, "first_contact_top": top,
+                                        "first_contact_centred": ring,
+                                        "non_uniformity": ts["final_pressure_non_uniformity"]}
 
     rnd = sleeve_outputs(run_scene("sleeve-random-threshold", "paper-random", *PAPER, "-quiet", "1", "-vtkevery", "0"))
     hist = rnd["history"]
