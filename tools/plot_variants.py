@@ -32,18 +32,23 @@ def save(fig, path):
     print("wrote", path)
 
 
+def draw_beam_phases(ax, table):
+    """The beam's triangles coloured by phase (phase-*.csv rows) on its 10 cm x 1 cm frame."""
+    polys = [[(float(r[f"x{i}"]), float(r[f"y{i}"])) for i in (1, 2, 3)] for r in table]
+    ax.add_collection(PolyCollection(polys, facecolors=[PHASE_COLOURS[int(float(r["phase"]))] for r in table],
+                                     edgecolors="0.35", linewidths=0.1))
+    ax.set_xlim(0, 0.1)
+    ax.set_ylim(0, 0.01)
+    ax.set_aspect("equal")
+
+
 def asymmetric(src, dst, mesh="medium"):
     summary = results_io.read_json(os.path.join(src, "summary.json"))
     runs = {(r["law"], r["mesh"]): r for r in summary["runs"]}
     fig, axes = plt.subplots(2, 1, figsize=(10, 3.6))
     for ax, law in zip(axes, ("symmetric-plugin", "asymmetric")):
         table = rows(os.path.join(src, f"phase-{law}-{mesh}.csv"))
-        polys = [[(float(r[f"x{i}"]), float(r[f"y{i}"])) for i in (1, 2, 3)] for r in table]
-        ax.add_collection(PolyCollection(polys, facecolors=[PHASE_COLOURS[int(float(r["phase"]))] for r in table],
-                                         edgecolors="0.35", linewidths=0.1))
-        ax.set_xlim(0, 0.1)
-        ax.set_ylim(0, 0.01)
-        ax.set_aspect("equal")
+        draw_beam_phases(ax, table)
         r = runs[(law, mesh)]
         ax.set_title(f"alpha+ = {r['alpha_plus'] / 1e6:.0f} MPa, alpha- = {r['alpha_minus'] / 1e6:.0f} MPa: "
                      f"M1 (black) {r['fraction_m1']:.3f}, M2 (white) {r['fraction_m2']:.3f}, "
@@ -94,12 +99,7 @@ def deviatoric(src, dst, mesh="medium"):
     level = next((m for m in summary["meshes"] if m["name"] == mesh), summary["meshes"][-1])
     table = rows(os.path.join(src, f"phase-{level['name']}.csv"))
     fig, ax = plt.subplots(figsize=(10, 1.9))
-    polys = [[(float(r[f"x{i}"]), float(r[f"y{i}"])) for i in (1, 2, 3)] for r in table]
-    ax.add_collection(PolyCollection(polys, facecolors=[PHASE_COLOURS[int(float(r["phase"]))] for r in table],
-                                     edgecolors="0.35", linewidths=0.1))
-    ax.set_xlim(0, 0.1)
-    ax.set_ylim(0, 0.01)
-    ax.set_aspect("equal")
+    draw_beam_phases(ax, table)
     ax.set_yticks([])
     ax.set_title(f"direction {summary['parameters']['direction']}: M1 (black) {level['fraction_m1']:.3f}, "
                  f"M2 (white) {level['fraction_m2']:.3f}, tip {level['tip_deflection'] * 1e3:.2f} mm "

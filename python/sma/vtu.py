@@ -73,17 +73,23 @@ def _shaped(path, array, header_type, rows):
     return values.reshape(rows, components) if components > 1 else values
 
 
+def _xml_root(path, why_missing, why_damaged):
+    """(absolute path, root element) of an XML file; SceneError naming it when it is missing or
+    does not parse (the reasons given complete the message)."""
+    path = os.path.abspath(os.fspath(path))
+    if not os.path.isfile(path):
+        raise SceneError(f"{path} is missing ({why_missing})")
+    try:
+        return path, ET.parse(path).getroot()
+    except ET.ParseError as e:
+        raise SceneError(f"{path} is not a readable XML file ({e}): {why_damaged}") from None
+
+
 def read_vtu(path):
     """The mesh and fields of one VTU file written by a scene (a Fields): nodes, triangles, point
     and cell data as numpy arrays. Fails (SceneError) naming the file when it is missing, not such a
     VTU, damaged, or holds cells other than triangles."""
-    path = os.path.abspath(os.fspath(path))
-    if not os.path.isfile(path):
-        raise SceneError(f"{path} is missing (no such VTU: the run did not write it, or -vtkevery 0 skipped it)")
-    try:
-        root = ET.parse(path).getroot()
-    except ET.ParseError as e:
-        raise SceneError(f"{path} is not a readable XML file ({e}): a cut or damaged VTU") from None
+    path, root = _xml_root(path, "no such VTU: the run did not write it, or -vtkevery 0 skipped it", "a cut or damaged VTU")
     if root.tag != "VTKFile" or root.get("type") != "UnstructuredGrid":
         raise SceneError(f"{path} is not a VTK UnstructuredGrid file (root {root.tag} {root.get('type')!r})")
     if root.get("byte_order", "LittleEndian") != "LittleEndian" or root.get("compressor"):
@@ -128,13 +134,7 @@ def read_vtu(path):
 def read_pvd(path):
     """[(time in s, absolute path of the VTU)] of a fields.pvd, in its order. Fails (SceneError)
     naming the file when it is missing or damaged."""
-    path = os.path.abspath(os.fspath(path))
-    if not os.path.isfile(path):
-        raise SceneError(f"{path} is missing (a 2D sleeve scene writes it with its VTU files)")
-    try:
-        root = ET.parse(path).getroot()
-    except ET.ParseError as e:
-        raise SceneError(f"{path} is not a readable XML file ({e}): a cut or damaged file") from None
+    path, root = _xml_root(path, "a 2D sleeve scene writes it with its VTU files", "a cut or damaged file")
     states = []
     for entry in root.iter("DataSet"):
         try:
