@@ -15,14 +15,15 @@ checkout's whatever the user's install points at). Checked from the executed not
       here from the run's parameters, and the run's final pressure is within 2 dc_tol of it;
   (e) the sweep's printed table has one row per point of the printed grid (3 interferences x 2 g),
       as many as the sweep's table.csv; each final pressure is Lame's at its interference (the
-      ring's inner radius the pipe's minus it, as -interference's help says) within 2 dc_tol, the same for both g; the larger g reaches austenite sooner at every interference;
+      ring's inner radius the pipe's minus it, as -interference's help says) within 2 dc_tol, the
+      same for both g; the larger g reaches austenite sooner at every interference;
   (f) the 2D fields: the nodes and triangles it prints are the run's summary.json's; its figures
       (curve, sweep, fields, variants) are drawn as images;
   (g) the law swap: the largest difference of the two mean pressure curves it prints is the one
       computed here from the two runs' history.csv (0: no point is ever compressed, the asymmetry
       never acts); the obstacle swap's printed final pressure is its summary.json's, with the
       superellipse's default pipe (A = B = 50.48 mm) in its parameters.
-Writes results/checks/tutorial.json.
+About 25 s (the notebook 16 s, the kernel and nbconvert the rest). Writes results/checks/tutorial.json.
 """
 import ast
 import itertools
@@ -85,6 +86,10 @@ def main():
           f"(a) the committed notebook: {len(code)} code cells, none with an output or an execution count; "
           f"tags {sorted(tagged)}")
 
+    if shutil.which("jupyter-nbconvert") is None:
+        check(False, "(b) no jupyter-nbconvert on PATH: install Debian's jupyter-nbconvert and python3-ipykernel "
+                     "(tools/install-deps.sh, make deps)")
+        return finish()
     docs_before = files_under(os.path.join(ROOT, "docs"))
     shutil.rmtree(LAB, ignore_errors=True)
     with tempfile.TemporaryDirectory(prefix="sleeve-lab-") as tmp:
