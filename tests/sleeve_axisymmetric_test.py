@@ -14,7 +14,11 @@ frictionless pipe), at the paper's scale (0.5 mm interference, a = 2625).
 2. The pressure profile along the bore converges under refinement: L = 0.1 m (end effects over a
    quarter of the half length), nr 2, 4, 8: the largest difference between successive levels at
    the coarse nodes must fall by a factor >= 1.6 (order >= 0.7: the free end's corner is O(h)).
-3. Invariants on every run: no penetration (gap >= -1e-12 m), pressures >= 0, all austenite at the
+3. Friction and pull-out (the whole length, its end face z = 0 held axially, mu 0.2, the pipe moved
+   1 mm towards the held face after clamping): at the end every node in contact slips and the
+   axial force equals mu times the total normal force to 1e-8 (the sliding plateau), which is the
+   curve's maximum; the pull-out force converges (nr 2, 4, 8: successive differences at least halve).
+4. Invariants on every run: no penetration (gap >= -1e-12 m), pressures >= 0, all austenite at the
    end, the discrete heat balance at round-off (1e-8); bad input fails naming the option (-length 0,
    -plane stress).
 Writes results/checks/sleeve_axisymmetric.json.
@@ -96,8 +100,34 @@ data["profile_differences"] = diffs
 check(diffs[0] / diffs[1] >= 1.6, f"profile differences {diffs[0]:.3g} (nr 2-4), {diffs[1]:.3g} (4-8): "
       f"ratio {diffs[0] / diffs[1]:.2f} >= 1.6")
 
-# ---- 3. Bad input ----
-for args, culprit in ((["-length", "0"], "-length"), (["-plane", "stress"], "-plane")):
+# ---- 3. Friction and pull-out: the whole length, its end face z = 0 held (the shoulder), mu 0.2,
+# the pipe moved 1 mm towards it after clamping ----
+pull = {}
+for nr in (2, 4, 8):
+    out = run_scene("sleeve-axisymmetric", f"sleeve-axisymmetric-pull-nr{nr}", *PAPER, "-length", "0.1",
+                    "-nr", str(nr), "-mu", "0.2", "-pullout", "1e-3", "-pullsteps", "25")
+    s = json.load(open(os.path.join(out, "summary.json")))
+    curve = rows(os.path.join(out, "pullout.csv"))
+    last = curve[-1]
+    F, N = abs(float(last["axial_force"])), float(last["normal_force_total"])
+    plateau = abs(F - 0.2 * N) / (0.2 * N)
+    check(plateau < 1e-8, f"pull nr {nr}: sliding plateau |F| {F:.9g} N = mu N {0.2 * N:.9g} N "
+          f"(relative {plateau:.2g} < 1e-8)")
+    check(int(last["nodes_slipping"]) == int(last["nodes_in_contact"]) > 0,
+          f"pull nr {nr}: every node in contact slips at the end ({last['nodes_slipping']}/{last['nodes_in_contact']})")
+    forces = [abs(float(r["axial_force"])) for r in curve]
+    check(max(forces) <= F * (1 + 1e-9), f"pull nr {nr}: the plateau is the curve's maximum "
+          f"({max(forces):.9g} N)")
+    pull[nr] = F
+    data[f"pullout_force_nr{nr}"] = F
+    data[f"plateau_relative_nr{nr}"] = plateau
+d1, d2 = abs(pull[2] - pull[4]), abs(pull[4] - pull[8])
+check(d2 < d1 / 2, f"pull-out force converges: {pull[2]:.7g}, {pull[4]:.7g}, {pull[8]:.7g} N "
+      f"(differences {d1:.4g}, {d2:.4g}: order {math.log2(d1 / d2):.2f})")
+
+# ---- 4. Bad input ----
+for args, culprit in ((["-length", "0"], "-length"), (["-plane", "stress"], "-plane"),
+                      (["-pullout", "1e-3"], "-pullout")):
     p = subprocess.run([os.path.join(ROOT, "tools", "ff"), "edp/scenes/sleeve-axisymmetric.edp", *args,
                         "-out", os.path.join(ROOT, "build", "test-results", "sleeve-axisymmetric-bad")],
                        cwd=ROOT, capture_output=True, text=True)

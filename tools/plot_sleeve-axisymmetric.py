@@ -6,7 +6,9 @@ from results/sleeve-axisymmetric/:
                          over the bore, against the bore's mean temperature (C) and against time (s);
                          the open-ended cylinder's and plane strain's closed forms dotted
   bore-pressure.png      the contact pressure along the bore (MPa against z in mm) at the three
-                         instants (end of dilatation, during contact, end)
+                         instants (end of dilatation, during contact, end; and after the pull-out)
+  pullout.png            (-pullout > 0) the axial force the pipe transmits (kN, towards the held face) and
+                         mu times the total normal force against the pipe's displacement (mm)
 Usage: tools/plot_sleeve-axisymmetric.py results/sleeve-axisymmetric
 """
 import results_io
@@ -72,11 +74,34 @@ def bore_pressure(outdir, summary):
     save(fig, os.path.join(outdir, "bore-pressure.png"), 120)
 
 
+def pullout(outdir, summary):
+    path = os.path.join(outdir, "pullout.csv")
+    if not os.path.exists(path):
+        return
+    d = read_csv(path)
+    w = [abs(v) * 1e3 for v in d["pipe_displacement"]]
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    # -axial_force: the pipe moves along -z, the friction it drags the sleeve with is then > 0; it
+    # starts negative, from the clamping's own friction (the sleeve's axial contraction held back)
+    ax.plot(w, [-v / 1e3 for v in d["axial_force"]], lw=1.2, marker=".", ms=3,
+            label="axial force on the sleeve, towards the held face")
+    ax.plot(w, [summary["mu"] * v / 1e3 for v in d["normal_force_total"]], lw=0.8, ls="--",
+            label=f"mu N (mu = {summary['mu']:g})")
+    ax.set_xlabel("pipe displacement towards the held end face (mm)")
+    ax.set_ylabel("force (kN, whole circumference)")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    ax.set_title(f"{summary['scene']}: pull-out, force {summary['pullout_force_max'] / 1e3:.1f} kN")
+    fig.tight_layout()
+    save(fig, os.path.join(outdir, "pullout.png"), 120)
+
+
 def main():
     outdir = sys.argv[1] if len(sys.argv) > 1 else "results/sleeve-axisymmetric"
     summary = results_io.read_json(os.path.join(outdir, "summary.json"))
     force_temperature(outdir, summary)
     bore_pressure(outdir, summary)
+    pullout(outdir, summary)
     print(f"figures in {outdir}/")
 
 
