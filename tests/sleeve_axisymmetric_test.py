@@ -1,0 +1,137 @@
+#!/usr/bin/python3
+"""Verification of the sleeve-axisymmetric scene (the sleeve of finite length, half of it, rigid
+frictionless pipe), at the paper's scale (0.5 mm interference, a = 2625).
+
+1. Mid-length against the closed form: at the end the ring is all austenite and elastic, and far
+   from its free ends a long sleeve is an open-ended thick cylinder (generalized plane strain:
+   e_zz constant, zero axial force, so sigma_zz = 0 and the in-plane stresses are plane stress's):
+   p = E delta (b^2 - a^2) / (a ((1 - nu) a^2 + (1 + nu) b^2)), computed here from E, nu and the
+   radii. L = 0.4 m (L / thickness 40: the ends' influence at mid-length about exp(-11)):
+   the contact pressure at z = 0 must converge to it at order >= 1.8 (nr 2, 4; square cells),
+   within 5e-4 at nr 4. The closed form is itself checked against an independent computation:
+   sleeve-radial with -plane stress (the same in-plane problem) at nr 64, to 1e-4; and it must
+   differ from the plane-strain Lame pressure (the radial model's default) by more than 5 %.
+2. The pressure profile along the bore converges under refinement: L = 0.1 m (end effects over a
+   quarter of the half length), nr 2, 4, 8: the largest difference between successive levels at
+   the coarse nodes must fall by a factor >= 1.6 (order >= 0.7: the free end's corner is O(h)).
+3. Friction and pull-out (the whole length, its end face z = 0 held axially, mu 0.2, the pipe moved
+   1 mm towards the held face after clamping): at the end every node in contact slips and the
+   axial force equals mu times the total normal force to 1e-8 (the sliding plateau), which is the
+   curve's maximum; the pull-out force converges (nr 2, 4, 8: successive differences at least halve).
+4. Invariants on every run: no penetration (gap >= -1e-12 m), pressures >= 0, all austenite at the
+   end, the discrete heat balance at round-off (1e-8); bad input fails naming the option (-length 0,
+   -plane stress).
+Writes results/checks/sleeve_axisymmetric.json.
+"""
+import json
+import math
+import os
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+
+from checklib import ROOT, check, finish, record, rows, run_scene  # noqa: E402
+
+PAPER = ["-scale", "paper", "-quiet", "1", "-steps", "500", "-tend", "100"]
+
+
+def axi(tag, *args):
+    out = run_scene("sleeve-axisymmetric", "sleeve-axisymmetric-" + tag, *PAPER, *args)
+    return {"summary": json.load(open(os.path.join(out, "summary.json"))),
+            "history": rows(os.path.join(out, "history.csv")),
+            "bore": rows(os.path.join(out, "bore-final.csv"))}
+
+
+def invariants(tag, run):
+    s = run["summary"]
+    gap_min = min(float(r["gap"]) for r in run["bore"])
+    p_min = min(float(r["pressure"]) for r in run["bore"])
+    final = run["history"][-1]
+    check(gap_min >= -1e-12 and p_min >= 0, f"{tag}: no penetration (gap min {gap_min:.3g} m), pressure >= 0 "
+          f"(min {p_min:.6g} Pa)")
+    check(float(final["fraction_austenite"]) == 1.0, f"{tag}: all austenite at the end "
+          f"({final['fraction_austenite']})")
+    check(s["heat_balance_residual_max"] < 1e-8, f"{tag}: heat balance residual {s['heat_balance_residual_max']:.3g}")
+
+
+data = {}
+# ---- 1. Mid-length against the open-ended cylinder ----
+E, nu = 85e9, 0.3
+mid = {}
+for nr in (2, 4):
+    run = axi(f"long-nr{nr}", "-length", "0.4", "-nr", str(nr))
+    invariants(f"L 0.4 nr {nr}", run)
+    s = run["summary"]
+    a_, b_ = s["parameters"]["ring_inner_radius"], s["parameters"]["ring_inner_radius"] + s["parameters"]["ring_thickness"]
+    delta = s["parameters"]["pipe_A"] - a_
+    closed = E * delta * (b_**2 - a_**2) / (a_ * ((1 - nu) * a_**2 + (1 + nu) * b_**2))
+    check(abs(s["open_cylinder_pressure"] - closed) <= 1e-10 * closed,
+          f"scene's closed form {s['open_cylinder_pressure']:.9g} Pa = this test's {closed:.9g} Pa")
+    mid[nr] = abs(s["final_pressure_mid"] - closed) / closed
+    data[f"mid_error_nr{nr}"] = mid[nr]
+order = math.log2(mid[2] / mid[4])
+data["mid_order"] = order
+check(order >= 1.8, f"mid-length pressure -> open cylinder at order {order:.2f} (errors {mid[2]:.3g}, {mid[4]:.3g})")
+check(mid[4] < 5e-4, f"nr 4: mid-length error {mid[4]:.3g} < 5e-4")
+planestrain = s["plane_strain_pressure"]
+check(abs(planestrain - closed) / closed > 0.05, f"plane strain {planestrain / 1e6:.3f} MPa differs from the "
+      f"open cylinder {closed / 1e6:.3f} MPa by {abs(planestrain - closed) / closed:.3f} > 5 %")
+rad = run_scene("sleeve-radial", "sleeve-axisymmetric-radial-stress", "-scale", "paper", "-quiet", "1",
+                "-plane", "stress", "-nr", "64", "-steps", "500", "-tend", "100")
+radial = json.load(open(os.path.join(rad, "summary.json")))["final_pressure_mean"]
+data["radial_plane_stress_pressure"] = radial
+check(abs(radial - closed) / closed < 1e-4, f"sleeve-radial -plane stress {radial / 1e6:.5f} MPa = open "
+      f"cylinder {closed / 1e6:.5f} MPa (relative {abs(radial - closed) / closed:.2g})")
+
+# ---- 2. The profile along the bore converges ----
+profiles = {}
+for nr in (2, 4, 8):
+    run = axi(f"short-nr{nr}", "-length", "0.1", "-nr", str(nr))
+    invariants(f"L 0.1 nr {nr}", run)
+    profiles[nr] = {round(float(r["z"]), 9): float(r["pressure"]) for r in run["bore"]}
+diffs = []
+for c, f in ((2, 4), (4, 8)):
+    zs = [z for z in profiles[c] if z in profiles[f]]
+    check(len(zs) == len(profiles[c]), f"nr {c}: every node of the coarse bore is one of nr {f}'s")
+    diffs.append(max(abs(profiles[c][z] - profiles[f][z]) for z in zs) / closed)
+data["profile_differences"] = diffs
+check(diffs[0] / diffs[1] >= 1.6, f"profile differences {diffs[0]:.3g} (nr 2-4), {diffs[1]:.3g} (4-8): "
+      f"ratio {diffs[0] / diffs[1]:.2f} >= 1.6")
+
+# ---- 3. Friction and pull-out: the whole length, its end face z = 0 held (the shoulder), mu 0.2,
+# the pipe moved 1 mm towards it after clamping ----
+pull = {}
+for nr in (2, 4, 8):
+    out = run_scene("sleeve-axisymmetric", f"sleeve-axisymmetric-pull-nr{nr}", *PAPER, "-length", "0.1",
+                    "-nr", str(nr), "-mu", "0.2", "-pullout", "1e-3", "-pullsteps", "25")
+    s = json.load(open(os.path.join(out, "summary.json")))
+    curve = rows(os.path.join(out, "pullout.csv"))
+    last = curve[-1]
+    F, N = abs(float(last["axial_force"])), float(last["normal_force_total"])
+    plateau = abs(F - 0.2 * N) / (0.2 * N)
+    check(plateau < 1e-8, f"pull nr {nr}: sliding plateau |F| {F:.9g} N = mu N {0.2 * N:.9g} N "
+          f"(relative {plateau:.2g} < 1e-8)")
+    check(int(last["nodes_slipping"]) == int(last["nodes_in_contact"]) > 0,
+          f"pull nr {nr}: every node in contact slips at the end ({last['nodes_slipping']}/{last['nodes_in_contact']})")
+    forces = [abs(float(r["axial_force"])) for r in curve]
+    check(max(forces) <= F * (1 + 1e-9), f"pull nr {nr}: the plateau is the curve's maximum "
+          f"({max(forces):.9g} N)")
+    pull[nr] = F
+    data[f"pullout_force_nr{nr}"] = F
+    data[f"plateau_relative_nr{nr}"] = plateau
+d1, d2 = abs(pull[2] - pull[4]), abs(pull[4] - pull[8])
+check(d2 < d1 / 2, f"pull-out force converges: {pull[2]:.7g}, {pull[4]:.7g}, {pull[8]:.7g} N "
+      f"(differences {d1:.4g}, {d2:.4g}: order {math.log2(d1 / d2):.2f})")
+
+# ---- 4. Bad input ----
+for args, culprit in ((["-length", "0"], "-length"), (["-plane", "stress"], "-plane"),
+                      (["-pullout", "1e-3"], "-pullout")):
+    p = subprocess.run([os.path.join(ROOT, "tools", "ff"), "edp/scenes/sleeve-axisymmetric.edp", *args,
+                        "-out", os.path.join(ROOT, "build", "test-results", "sleeve-axisymmetric-bad")],
+                       cwd=ROOT, capture_output=True, text=True)
+    check(p.returncode != 0 and culprit in p.stdout + p.stderr, f"{' '.join(args)}: fails naming {culprit}")
+
+record("sleeve_axisymmetric", data)
+finish()

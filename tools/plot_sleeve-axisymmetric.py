@@ -1,0 +1,109 @@
+#!/usr/bin/python3
+"""Figures of the sleeve-axisymmetric scene (the sleeve of finite length, half of it, rigid pipe),
+from results/sleeve-axisymmetric/:
+
+  force-temperature.png  contact pressure (MPa) at mid-length (z = 0), at the free end and its mean
+                         over the bore, against the bore's mean temperature (C) and against time (s);
+                         the open-ended cylinder's and plane strain's closed forms dotted
+  bore-pressure.png      the contact pressure along the bore (MPa against z in mm) at the three
+                         instants (end of dilatation, during contact, end; and after the pull-out)
+  pullout.png            (-pullout > 0) the axial force the pipe transmits (kN, towards the held face) and
+                         mu times the total normal force against the pipe's displacement (mm)
+Usage: tools/plot_sleeve-axisymmetric.py results/sleeve-axisymmetric
+"""
+import results_io
+import glob
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plot_sleeve import fields_time, read_csv, save  # noqa: E402
+from units import celsius  # noqa: E402
+
+
+def closed_forms(ax, summary):
+    ax.axhline(summary["open_cylinder_pressure"] / 1e6, color="k", ls=":", lw=0.8, label="open-ended cylinder")
+    ax.axhline(summary["plane_strain_pressure"] / 1e6, color="grey", ls="--", lw=0.8, label="plane strain (Lame)")
+
+
+def force_temperature(outdir, summary):
+    h = read_csv(os.path.join(outdir, "history.csv"))
+    fig, (left, right) = plt.subplots(1, 2, figsize=(13, 4.5))
+    T = [celsius(v) for v in h["T_inner_mean"]]
+    for key, label in (("pressure_mid", "mid-length (z = 0)"), ("pressure_end", "free end"),
+                       ("pressure_mean", "mean over the bore")):
+        p = [v / 1e6 for v in h[key]]
+        left.plot(T, p, lw=1, label=label)
+        right.plot(h["t"], p, lw=1, label=label)
+    for ax in (left, right):
+        closed_forms(ax, summary)
+        ax.set_ylabel("contact pressure (MPa)")
+        ax.grid(alpha=0.3)
+    left.set_xlabel("bore's mean temperature (°C)")
+    right.set_xlabel("t (s)")
+    left.legend(fontsize=7, loc="lower right")
+    p = summary["parameters"]
+    fig.suptitle(f"{summary['scene']}: L {p['length'] * 1e3:g} mm, nr {p['nr']}, nz {p['nz']}, "
+                 f"{summary['n_steps']} steps")
+    fig.tight_layout()
+    save(fig, os.path.join(outdir, "force-temperature.png"), 120)
+
+
+def bore_pressure(outdir, summary):
+    paths = sorted(glob.glob(os.path.join(outdir, "bore-*.csv")))
+    if not paths:
+        return
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    for path in paths:
+        d = read_csv(path)
+        name = os.path.basename(path)[len("bore-"):-len(".csv")]
+        ax.plot([z * 1e3 for z in d["z"]], [v / 1e6 for v in d["pressure"]], lw=1, marker=".", ms=3,
+                label=f"{name} ({fields_time(path)})")
+    closed_forms(ax, summary)
+    ax.set_xlabel("z (mm): 0 the symmetry plane, L / 2 the free end")
+    ax.set_ylabel("contact pressure (MPa)")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7)
+    ax.set_title(f"{summary['scene']}: contact pressure along the bore")
+    fig.tight_layout()
+    save(fig, os.path.join(outdir, "bore-pressure.png"), 120)
+
+
+def pullout(outdir, summary):
+    path = os.path.join(outdir, "pullout.csv")
+    if not os.path.exists(path):
+        return
+    d = read_csv(path)
+    w = [abs(v) * 1e3 for v in d["pipe_displacement"]]
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    # -axial_force: the pipe moves along -z, the friction it drags the sleeve with is then > 0; it
+    # starts negative, from the clamping's own friction (the sleeve's axial contraction held back)
+    ax.plot(w, [-v / 1e3 for v in d["axial_force"]], lw=1.2, marker=".", ms=3,
+            label="axial force on the sleeve, towards the held face")
+    ax.plot(w, [summary["mu"] * v / 1e3 for v in d["normal_force_total"]], lw=0.8, ls="--",
+            label=f"mu N (mu = {summary['mu']:g})")
+    ax.set_xlabel("pipe displacement towards the held end face (mm)")
+    ax.set_ylabel("force (kN, whole circumference)")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    ax.set_title(f"{summary['scene']}: pull-out, force {summary['pullout_force_max'] / 1e3:.1f} kN")
+    fig.tight_layout()
+    save(fig, os.path.join(outdir, "pullout.png"), 120)
+
+
+def main():
+    outdir = sys.argv[1] if len(sys.argv) > 1 else "results/sleeve-axisymmetric"
+    summary = results_io.read_json(os.path.join(outdir, "summary.json"))
+    force_temperature(outdir, summary)
+    bore_pressure(outdir, summary)
+    pullout(outdir, summary)
+    print(f"figures in {outdir}/")
+
+
+if __name__ == "__main__":
+    results_io.guard(main)
