@@ -18,17 +18,24 @@ Runs edp/scenes/free-ring.edp (on/off phases, the paper's scheme) without the op
     heat of the cycle is zero; the dissipated heat of the cycle is k per unit fraction moved each
     way, 2 k per unit volume over the cycle: dissipated / latent heat moved = k / (rho L)
     (the latent heat moved, rho L per unit volume each way, measures the ring's area), to 1e-9.
+And on sleeve-radial (the fraction model; the paper's scale), the same law through the sleeve's
+-dissipation: 0 gives every file of the run without the option (summary.json but its timing
+keys); 1e5 Pa runs the nested loops (-stepsolver auto says so; -stepsolver newton refuses, naming
+the dissipation), its heat balance holds to 1e-9 with the dissipated heat as a source, and the
+dissipated heat is at most 2 k x the ring's area per radian (every point there and back) and
+above 99 % of it (the ring transforms through and back).
 Writes results/checks/free_ring_dissipation.json.
 """
 import filecmp
 import json
 import math
 import os
+import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from checklib import check, finish, record, rows, run_scene  # noqa: E402
+from checklib import ROOT, TEST_RESULTS, check, finish, record, rows, run_scene  # noqa: E402
 
 K = 1e6  # Pa
 
@@ -47,6 +54,43 @@ def closed_forms(p, k):
     a2, m = (p["rho"] * p["a"]) ** 2 / bulk, rho_l / p["T0"]
     x = (-m + math.sqrt(m * m + 4 * a2 * (m * (p["Tc"] - p["T0"]) - k))) / (2 * a2)
     return t_f, p["Tc"] - x
+
+
+def timeless(path):
+    """summary.json without its timing keys."""
+    return {k: v for k, v in json.load(open(path)).items() if "seconds" not in k and "over_floor" not in k}
+
+
+def sleeve_radial():
+    outs = {}
+    for name, args in (("plain", []), ("zero", ["-dissipation", "0"]), ("k", ["-dissipation", "1e5"])):
+        outs[name] = os.path.join(TEST_RESULTS, f"sleeve-radial-dissipation-{name}")
+        run = subprocess.run([os.path.join(ROOT, "tools", "ff"), "edp/scenes/sleeve-radial.edp", "-quiet", "1",
+                              "-out", outs[name], *args], cwd=ROOT, capture_output=True, text=True)
+        check(run.returncode == 0, f"sleeve-radial {' '.join(args)} ran (exit {run.returncode})")
+        if name == "k":
+            note = "-stepsolver auto runs the paper's nested loops (fixedpoint)" in run.stdout + run.stderr
+            check(note, "sleeve-radial -dissipation 1e5: the run says auto took the nested loops")
+    files = sorted(f for f in os.listdir(outs["plain"]) if f != "summary.json")
+    same = all(filecmp.cmp(os.path.join(outs["plain"], f), os.path.join(outs["zero"], f), shallow=False) for f in files)
+    check(same and timeless(os.path.join(outs["plain"], "summary.json")) == timeless(os.path.join(outs["zero"], "summary.json")),
+          f"sleeve-radial -dissipation 0: {', '.join(files)} byte-identical, summary.json equal but its timing keys")
+    s = json.load(open(os.path.join(outs["k"], "summary.json")))
+    p = s["parameters"]
+    ri, ro = p["ring_inner_radius"], p["ring_inner_radius"] + p["ring_thickness"]
+    full = 2 * s["dissipation"] * (ro * ro - ri * ri) / 2
+    check(s["step_solver"] == "fixedpoint" and s["heat_balance_residual_max"] <= 1e-9,
+          f"sleeve-radial -dissipation 1e5: step solver {s['step_solver']}, heat balance {s['heat_balance_residual_max']:.2e} <= 1e-9")
+    check(0.99 * full < s["heat_dissipated"] <= full * (1 + 1e-9),
+          f"dissipated heat {s['heat_dissipated']:.6g} J/m per radian, 2 k x ring area {full:.6g} "
+          f"({s['heat_dissipated'] / full - 1:+.2e})")
+    refused = subprocess.run([os.path.join(ROOT, "tools", "ff"), "edp/scenes/sleeve-radial.edp", "-dissipation", "1e5",
+                              "-stepsolver", "newton", "-out", os.path.join(TEST_RESULTS, "sleeve-radial-dissipation-newton")],
+                             cwd=ROOT, capture_output=True, text=True)
+    check(refused.returncode == 1 and "-stepsolver newton cannot run here: it solves the paper's law without "
+          "dissipation" in refused.stdout + refused.stderr, "-stepsolver newton refuses -dissipation > 0, naming it")
+    return {"heat_dissipated_J_per_m": s["heat_dissipated"], "full_cycle_J_per_m": full,
+            "heat_balance_residual_max": s["heat_balance_residual_max"], "final_pressure_mean": s["final_pressure_mean"]}
 
 
 def main():
@@ -108,13 +152,15 @@ def main():
     check(min(h["dissipated_heat"]) >= 0 and abs(ratio - expected) <= 1e-9 * expected,
           f"dissipated heat of the cycle {dissipated:.6g} J/m = 2 k x ring area: dissipated / latent moved "
           f"{ratio:.12g}, k / (rho L) = {expected:.12g}; summary heat_dissipated {summary['heat_dissipated']:.6g}")
+    radial = sleeve_radial()
     record("free_ring_dissipation", {
         "test": "free_ring_dissipation", "k_Pa": K, "dt": p["dt"],
         "forward_K": t_fwd, "forward_closed_form_K": t_f, "forward_tolerance_K": tol_fwd,
         "reverse_K": t_rev, "reverse_closed_form_K": t_r, "reverse_tolerance_K": tol_rev,
         "width_K": width, "width_closed_form_K": width_cf,
         "heat_dissipated_J_per_m": dissipated, "latent_heat_moved_J_per_m": latent_moved,
-        "energy_balance_step_residual": step_residual, "energy_balance_run_residual": run_residual})
+        "energy_balance_step_residual": step_residual, "energy_balance_run_residual": run_residual,
+        "sleeve_radial": radial})
     finish()
 
 
