@@ -16,6 +16,7 @@
 //       points whose martensite fraction grew by > tol over a step after having lost fraction
 //       earlier (reverted: 0/1 per point, in/out; plugin/core/phase_fraction.hpp).
 //   real AuchmutyLocal(real[] trace, real[] alpha, real[] c, real[] s, real[] weight)
+//   real AuchmutyLocalDissipative(real[] trace, alpha, c, s, weight, law (7 values), local)
 //       sum_i w_i (phi2*(s_i) - trace_i s_i), the sigma2 part of L_II [45].
 //   long PhaseCoefficients(real[] T, real[] law = [rho, a, L, T0, Tc], real[] alpha, real[] c)
 //       alpha(T) and c(T) (Pa) at every point (docs/model.md#temperature-dependence).
@@ -172,9 +173,9 @@ long PhaseFractionProject(KN<double>* const& trace, KN<double>* const& alpha, KN
                           KN<double>* const& law, KN<double>* const& local, KN<double>* const& s,
                           KN<double>* const& chi) {
   return guarded("PhaseFractionProject", [&] {
-    if (law->N() != 6)
-      throw std::invalid_argument("law must be [rho, a, L, T0, Tc, laminate modulus], got " +
-                                  std::to_string(law->N()) + " values");
+    if (law->N() != 6 && law->N() != 7)
+      throw std::invalid_argument("law must be [rho, a, L, T0, Tc, laminate modulus] or those and "
+                                  "the dissipation k, got " + std::to_string(law->N()) + " values");
     const long n = trace->N();
     if (local->N() != 3 * n)
       throw std::invalid_argument("local data must hold kappa, b and chi at the step's start: " +
@@ -184,7 +185,28 @@ long PhaseFractionProject(KN<double>* const& trace, KN<double>* const& alpha, KN
     const sma::span<const double> kappa{data, (std::size_t)n}, b{data + n, (std::size_t)n},
         start{data + 2 * n, (std::size_t)n};
     return (long)sma::project_fractions(thermal_law(&thermal), cview(trace), cview(alpha), cview(c),
-                                        kappa, b, start, (*law)[5], view(s), view(chi));
+                                        kappa, b, start, (*law)[5], view(s), view(chi),
+                                        law->N() == 7 ? (*law)[6] : 0.0);
+  });
+}
+
+// The dissipative law's local part of L_II: sum weight (g**(chi) - s t), chi = s / alpha, with
+// the dissipation k = law[6] and chi at the step's start in local[2n, 3n) (PhaseFractionProject's).
+double AuchmutyLocalDissipative(KN<double>* const& trace, KN<double>* const& alpha,
+                                KN<double>* const& c, KN<double>* const& s, KN<double>* const& weight,
+                                KN<double>* const& law, KN<double>* const& local) {
+  return guarded("AuchmutyLocalDissipative", [&] {
+    const long n = trace->N();
+    if (law->N() != 7) throw std::invalid_argument("law must hold 7 values, the 7th the dissipation k");
+    if (alpha->N() != n || c->N() != n || s->N() != n || weight->N() != n || local->N() != 3 * n)
+      throw std::invalid_argument("arrays of different lengths");
+    const double k = (*law)[6];
+    if (!(k >= 0.0 && std::isfinite(k))) throw std::domain_error("dissipation k < 0 or not finite");
+    double sum = 0.0;
+    for (long i = 0; i < n; ++i)
+      sum += (*weight)[i] * sma::dissipative_local_energy((*trace)[i], (*alpha)[i], (*c)[i], k, (*s)[i],
+                                                           (*local)[2 * n + i]);
+    return sum;
   });
 }
 
@@ -685,6 +707,8 @@ static void Load_Init() {
   Global.Add("StepSolveFraction", "(",
              new OneOperator8_<long, A, A, KNM<double>*, A, A, A, A, A>(StepSolveFraction));
   Global.Add("AuchmutyLocal", "(", new OneOperator5_<double, A, A, A, A, A>(AuchmutyLocal));
+  Global.Add("AuchmutyLocalDissipative", "(",
+             new OneOperator7_<double, A, A, A, A, A, A, A>(AuchmutyLocalDissipative));
   Global.Add("RoundToFloat", "(", new OneOperator1_<long, A>(RoundToFloat));
   Global.Add("SmaPluginVersion", "(", new OneOperator0<double>(SmaPluginVersion));
   Global.Add("WallSeconds", "(", new OneOperator0<double>(WallSeconds));

@@ -36,6 +36,12 @@
 // step's start. A pure point still changes phase exactly at Frémond's threshold.
 // kappa = 0 at a point is the on/off step there (phase_projection.hpp, same tie rule), chi in
 // {-1, 0, 1}: the paper's scheme (-phasemodel onoff).
+// Dissipation (the dissipative Fremond law, docs/model.md#a-dissipative-law; k = 0: the paper's
+// law, the same arithmetic): a rate-independent dissipation k |chi - chi_start| per unit volume
+// (k in Pa, the unit of alpha and c) added to the step's local problem. A pure point then moves
+// only when its drive alpha |t| - c passes +k (towards martensite) or -k (back): the band of the
+// held fraction widens by k / (D + q) on both sides. On/off (D + q = 0): the least of the
+// phases' energies -c, -alpha t, +alpha t each plus k |chi - chi_start| (the same tie rule).
 #pragma once
 
 #include <cmath>
@@ -54,6 +60,43 @@ inline Phase phase_of_fraction(double chi) {
   return chi > 0 ? Phase::Martensite1 : chi < 0 ? Phase::Martensite2 : Phase::Austenite;
 }
 
+// The on/off step with dissipation k (Pa): chi in {-1, 0, 1} of least
+//   -c (austenite), -alpha t (martensite 1), +alpha t (martensite 2), each + k |chi - start|;
+// ties: the previous phase if among the least, else the first of A, M1, M2 (project_phase's rule).
+inline double project_phase_dissipative(double trace, double alpha, double c, double k,
+                                        double previous, double start) {
+  const double chi[3] = {0.0, 1.0, -1.0};
+  const double energy[3] = {-c + k * std::fabs(start), -alpha * trace + k * std::fabs(1.0 - start),
+                            alpha * trace + k * std::fabs(1.0 + start)};
+  const double least = std::fmin(energy[0], std::fmin(energy[1], energy[2]));
+  for (int p = 0; p < 3; ++p)
+    if (chi[p] == previous && energy[p] == least) return chi[p];
+  for (int p = 0; p < 3; ++p)
+    if (energy[p] == least) return chi[p];
+  return 0.0;  // unreachable
+}
+
+// The dissipative law's local part of Auchmuty's Lagrangian at one point: g**(chi) - s t with
+// g(x) = c |x| + k |x - start| on [-1, 1] (the conjugate of phi2 at s = alpha x, k = 0: [49] and
+// its completion for c < 0) and chi = s / alpha (0 where alpha = 0). g is piecewise linear with
+// kinks at -1, 0, start, 1: its convex envelope is the lower hull of those points.
+inline double dissipative_local_energy(double trace, double alpha, double c, double k, double s,
+                                       double start) {
+  const double chi = alpha > 0 ? s / alpha : 0.0;
+  if (std::fabs(chi) > 1.0 + 1e-12) return INFINITY;
+  const double x[4] = {-1.0, 0.0, std::fmin(1.0, std::fmax(-1.0, start)), 1.0};
+  double g[4];
+  for (int i = 0; i < 4; ++i) g[i] = c * std::fabs(x[i]) + k * std::fabs(x[i] - start);
+  double envelope = INFINITY;
+  for (int i = 0; i < 4; ++i) {
+    if (x[i] == chi) envelope = std::fmin(envelope, g[i]);
+    for (int j = 0; j < 4; ++j)
+      if (x[i] < chi && chi < x[j])
+        envelope = std::fmin(envelope, g[i] + (g[j] - g[i]) * (chi - x[i]) / (x[j] - x[i]));
+  }
+  return envelope - s * trace;
+}
+
 // Local heat-balance stiffness D (Pa per unit fraction) of one point.
 inline double enthalpy_stiffness(const ThermalLaw& law, double trace, double alpha, double kappa) {
   const double dalpha_dT = alpha > 0 ? law.rho * law.a : 0.0;  // alpha = rho a (Tc - T) below Tc
@@ -66,15 +109,27 @@ inline double enthalpy_stiffness(const ThermalLaw& law, double trace, double alp
 // laminate: lambda + 2 mu (0: no laminate, the plain enthalpy step).
 inline double project_fraction(const ThermalLaw& law, double trace, double alpha, double c,
                                double kappa, double b, double previous, double start = 0.0,
-                               double laminate = 0.0) {
+                               double laminate = 0.0, double dissipation = 0.0) {
   if (!std::isfinite(trace) || !std::isfinite(alpha) || !std::isfinite(c) || !std::isfinite(kappa) ||
-      !std::isfinite(b) || !std::isfinite(previous) || !std::isfinite(start) || !std::isfinite(laminate))
+      !std::isfinite(b) || !std::isfinite(previous) || !std::isfinite(start) || !std::isfinite(laminate) ||
+      !std::isfinite(dissipation))
     throw std::domain_error("project_fraction: non-finite input");
+  if (dissipation < 0.0) throw std::domain_error("project_fraction: dissipation k < 0");
   const double D = enthalpy_stiffness(law, trace, alpha, kappa);
   const double q = laminate > 0 ? alpha * alpha / laminate : 0.0;
   if (D + q == 0.0) {
+    if (dissipation > 0.0) return project_phase_dissipative(trace, alpha, c, dissipation, previous, start);
     const Phase before = phase_of_fraction(previous);
     return spherical_stress(project_phase(trace, alpha, c, before), 1.0);
+  }
+  if (dissipation > 0.0) {
+    const double sign = trace > 0 ? 1.0 : trace < 0 ? -1.0 : (previous < 0 ? -1.0 : 1.0);
+    const double held = start * sign > 0 ? std::fabs(start) : 0.0;
+    const double drive = alpha * std::fabs(trace) - c;
+    const double lower = (D * b + drive - dissipation) / (D + q),
+                 upper = (D * b + drive + q + dissipation) / (D + q);
+    const double fraction = std::fmin(1.0, std::fmax(0.0, std::fmin(upper, std::fmax(lower, held))));
+    return fraction == 0.0 ? 0.0 : sign * fraction;
   }
   const double sign = trace > 0 ? 1.0 : trace < 0 ? -1.0 : (previous < 0 ? -1.0 : 1.0);
   // The fraction of this variant at the step's start (a change of variant starts from none).
@@ -91,7 +146,7 @@ inline std::size_t project_fractions(const ThermalLaw& law, span<const double> t
                                      span<const double> alpha, span<const double> c,
                                      span<const double> kappa, span<const double> b,
                                      span<const double> start, double laminate, span<double> s,
-                                     span<double> chi) {
+                                     span<double> chi, double dissipation = 0.0) {
   law.validate();
   const std::size_t n = trace.size();
   if (alpha.size() != n || c.size() != n || kappa.size() != n || b.size() != n ||
@@ -103,6 +158,9 @@ inline std::size_t project_fractions(const ThermalLaw& law, span<const double> t
                                 ", start " + std::to_string(start.size()) + ", s " +
                                 std::to_string(s.size()) + ", chi " + std::to_string(chi.size()) + ")");
   if (!(laminate >= 0.0)) throw std::domain_error("project_fractions: laminate modulus < 0");
+  if (!(dissipation >= 0.0 && std::isfinite(dissipation)))
+    throw std::domain_error("project_fractions: dissipation k = " + std::to_string(dissipation) +
+                            " must be finite and >= 0 (Pa)");
   std::size_t changed = 0;
   for (std::size_t i = 0; i < n; ++i) {
     if (!(alpha[i] >= 0.0))
@@ -113,7 +171,8 @@ inline std::size_t project_fractions(const ThermalLaw& law, span<const double> t
       throw std::domain_error("project_fractions: latent fraction b = " + std::to_string(b[i]) +
                               " outside [0, 1] at point " + std::to_string(i));
     const double next =
-        project_fraction(law, trace[i], alpha[i], c[i], kappa[i], b[i], chi[i], start[i], laminate);
+        project_fraction(law, trace[i], alpha[i], c[i], kappa[i], b[i], chi[i], start[i], laminate,
+                         dissipation);
     changed += next != chi[i];
     chi[i] = next;
     s[i] = alpha[i] * next;

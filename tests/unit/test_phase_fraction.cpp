@@ -151,3 +151,75 @@ TEST(Reversals, CountsPointsThatGrowAfterHavingShrunk) {
   EXPECT_EQ(sma::count_reversals(step2, step2, reverted, 0.0), 0u);
   EXPECT_THROW(sma::count_reversals(start, step1, reverted, -1.0), std::invalid_argument);
 }
+
+// The dissipative law (docs/model.md#a-dissipative-law): k |chi - start| added to the local problem.
+TEST(PhaseFractionDissipation, ZeroDissipationIsThePapersStepBitForBit) {
+  const double q = 85e9 / 1.3 * 0.7 / 0.4 + 0.0;  // any laminate modulus
+  for (double T : {205.0, 212.0, 215.0})
+    for (double t : {-3e-3, -1e-4, 0.0, 6.8e-4, 3e-3})
+      for (double start : {-1.0, -0.4, 0.0, 0.5, 1.0})
+        for (double kappa : {0.0, kKappa})
+          for (double laminate : {0.0, q}) {
+            const double alpha = kLaw.alpha(T), c = kLaw.c(T);
+            EXPECT_EQ(sma::project_fraction(kLaw, t, alpha, c, kappa, std::fabs(start), start, start, laminate),
+                      sma::project_fraction(kLaw, t, alpha, c, kappa, std::fabs(start), start, start, laminate, 0.0));
+          }
+}
+
+TEST(PhaseFractionDissipation, OnOffMinimisesTheIncrementalEnergyOverThePhases) {
+  // On/off (kappa = 0, no laminate): chi of least -alpha t chi + c |chi| + k |chi - start| over
+  // {-1, 0, 1}; the closed-form thresholds: from austenite at t > 0 martensite 1 iff alpha t - c > k.
+  const double alpha = 1.5e8, k = 1e6;
+  for (double c : {-2e6, -5e5, 0.0, 3e5, 2e6})
+    for (double t : {-3e-2, -1e-2, -1e-3, 0.0, 1e-3, 5e-3, 1e-2, 3e-2})
+      for (double start : {-1.0, 0.0, 1.0}) {
+        const double chi = sma::project_fraction(kLaw, t, alpha, c, 0.0, 0.0, start, start, 0.0, k);
+        auto energy = [&](double x) { return -alpha * t * x + c * std::fabs(x) + k * std::fabs(x - start); };
+        for (double other : {-1.0, 0.0, 1.0}) EXPECT_LE(energy(chi), energy(other)) << "c=" << c << " t=" << t;
+        if (start == 0.0 && t > 0) {
+          EXPECT_EQ(chi == 1.0, alpha * t - c > k) << "c=" << c << " t=" << t;
+        }
+        if (start == 1.0 && t > 0) {
+          EXPECT_EQ(chi == 0.0, alpha * t - c < -k) << "c=" << c << " t=" << t;
+        }
+      }
+}
+
+TEST(PhaseFractionDissipation, FractionsHoldInsideTheWidenedBand) {
+  // Fraction model: a point holds its fraction while -k - (1 - beta) q <= drive <= k + beta q
+  // (b = held: the heat solve saw it); a pure austenite point starts at drive = +k.
+  // At 240 K (c = 3.4 MPa) every drive >= -c is reachable with t >= 0.
+  const double laminate = 114.4e9, T = 240.0, alpha = kLaw.alpha(T), c = kLaw.c(T), k = 1e6;
+  const double q = alpha * alpha / laminate;
+  for (double held : {0.0, 0.3, 1.0})
+    for (double drive : {-3e6, -1.2e6, -0.9e6, 0.0, 0.9e6, 1.2e6, 3e6}) {
+      const double t = (drive + c) / alpha;
+      const double chi = sma::project_fraction(kLaw, t, alpha, c, kKappa, held, held, held, laminate, k);
+      const bool inside = drive >= -k - (1 - held) * q && drive <= k + held * q;
+      if (inside) {
+        EXPECT_DOUBLE_EQ(chi, held) << "held=" << held << " drive=" << drive;
+      } else if (drive > 0 ? held < 1 : held > 0) {  // outside: it moves, unless at the bound
+        EXPECT_NE(chi, held) << "held=" << held << " drive=" << drive;
+      }
+    }
+  EXPECT_THROW(sma::project_fraction(kLaw, 1e-3, alpha, c, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0), std::domain_error);
+  EXPECT_THROW(sma::project_fraction(kLaw, 1e-3, alpha, c, 0.0, 0.0, 0.0, 0.0, 0.0, INFINITY), std::domain_error);
+}
+
+TEST(PhaseFractionDissipation, LocalEnergyIsTheConvexEnvelopeAndThePapersAtZero) {
+  // k = 0: phi2* of [49] (c |chi|, the constant c below T0) at the on/off states.
+  const double alpha = 2e8;
+  for (double c : {-1e6, 0.0, 1e6})
+    for (double chi : {-1.0, 0.0, 1.0})
+      for (double start : {-1.0, 0.0, 1.0})
+        EXPECT_NEAR(sma::dissipative_local_energy(1e-3, alpha, c, 0.0, alpha * chi, start),
+                    sma::phi2_conjugate(alpha * chi, alpha, c) - alpha * chi * 1e-3, 1e-6);
+  // k > 0, c >= 0: g is convex, its envelope is itself: c |chi| + k |chi - start| - s t.
+  for (double chi : {-1.0, -0.3, 0.0, 0.4, 1.0})
+    EXPECT_NEAR(sma::dissipative_local_energy(2e-3, alpha, 1e6, 5e5, alpha * chi, 0.25),
+                1e6 * std::fabs(chi) + 5e5 * std::fabs(chi - 0.25) - alpha * chi * 2e-3, 1e-6);
+  // c < 0 < c + k, start 0: g = (c + k) |chi| is convex: the envelope is g.
+  EXPECT_NEAR(sma::dissipative_local_energy(0.0, alpha, -2e5, 5e5, alpha * 0.5, 0.0), 3e5 * 0.5, 1e-6);
+  // c + k < 0: g is concave on each side: the envelope is the chord through chi = -1, 1.
+  EXPECT_NEAR(sma::dissipative_local_energy(0.0, alpha, -2e6, 5e5, 0.0, 0.0), -2e6 + 5e5, 1e-6);
+}
