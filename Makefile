@@ -4,8 +4,9 @@
 #                                                        (ARGS=-help: list the scene's options only)
 #   make test                                            install, build, pass every test (ctest)
 #   make figures                                         the paper's claims, each figure beside ours: docs/figures.md
-#   make sweep SCENE=<scene> PARAM=g VALUES='250 500 1000' [ARGS=...] [JOBS=2] [OUT=dir]
-#                                                        one option swept: table and overlay figures
+#   make sweep SCENE=<scene> PARAM=g VALUES='250 500 1000' [PARAM2=interference VALUES2='2e-4 5e-4']
+#              [ARGS=...] [JOBS=2] [OUT=dir]             one option (or two: their grid) swept: table and
+#                                                        overlay figures (one panel per value of PARAM2)
 #   make bench                                           speed against error: docs/benchmarks.md
 #   make reference                                       the force curve's accuracy reference: docs/reference.md
 #   make paper-scale                                     fit a and the open choices to the paper's statements: docs/paper-scale.md
@@ -201,18 +202,22 @@ test: plugin meshes python
 # is refused as a value, not taken as --out).
 # OUT counts only when given (command line or environment): make ensemble's default OUT is not a
 # sweep's folder, wherever its line stands in this file.
-SWEEP_OUT_DEFAULT = results/sweeps/$(SCENE)-$(PARAM)
+SWEEP_OUT_DEFAULT = results/sweeps/$(SCENE)-$(PARAM)$(if $(PARAM2),-$(PARAM2))
 sweep: export SWEEP_SCENE := $(value SCENE)
 sweep: export SWEEP_PARAM := $(value PARAM)
 sweep: export SWEEP_VALUES := $(value VALUES)
+sweep: export SWEEP_PARAM2 := $(value PARAM2)
+sweep: export SWEEP_VALUES2 := $(value VALUES2)
 sweep: export SWEEP_ARGS := $(value ARGS)
 sweep: export SWEEP_JOBS := $(or $(value JOBS),2)
 sweep: export SWEEP_DIR := $(if $(filter command line environment environment override override,$(origin OUT)),$(value OUT),$(SWEEP_OUT_DEFAULT))
 sweep: check-scene plugin meshes python
 	@set -f; if [ -z "$$SWEEP_PARAM" ] || [ -z "$$SWEEP_VALUES" ]; then \
 	  echo "error: make sweep needs PARAM=<option without its dash> and VALUES='<v1> <v2> ...'" >&2; exit 2; fi; \
+	  second=(); if [ -n "$$SWEEP_PARAM2" ] || [ -n "$$SWEEP_VALUES2" ]; then \
+	    second=(--param2 "$$SWEEP_PARAM2" --env-values2 SWEEP_VALUES2); fi; \
 	  $(PYTHON) tools/sweep.py "$$SWEEP_SCENE" "$$SWEEP_PARAM" --env-values SWEEP_VALUES --jobs "$$SWEEP_JOBS" \
-	    --out "$$SWEEP_DIR" --env-args SWEEP_ARGS
+	    --out "$$SWEEP_DIR" --env-args SWEEP_ARGS "$${second[@]}"
 
 # Speed against error, all measured in one run: docs/benchmarks.md, results/bench/summary.json.
 bench: plugin meshes $(BENCH_MESHES)

@@ -13,7 +13,10 @@
   (c) DataFrame columns carry their units: history.csv's t_s, T_inner_mean_K, pressure_mean_Pa,
       contact-final.csv's normal_force_N/m, counts (step) integers without a unit; every column
       documented in docs/outputs.md's tables (history, points, contact-final, fields) gets the unit
-      the page gives it;
+      the page gives it; so does every column of beam's phase-coarse.csv and dc-convergence.csv,
+      ring-lame's pressure-l1.csv and free-ring's history.csv (short runs), whose frames keep the
+      files' numbers: the triangles' areas from x1_m ... y3_m sum to the beam's L H, pressure_nodal_Pa
+      = normal_force_N/m / tributary_length_m, stored_heat_J/m = boundary + latent per step;
   (d) the VTU reader (xml.etree + numpy) on sleeve-circular's coarse mesh (-steps 60 -vtkevery 20):
       node and triangle counts equal summary.json's nodes and triangles; every triangle's centroid
       (from the VTU's nodes and connectivity) is a row of fields-3-end.csv, whose sigma_rr equals
@@ -120,7 +123,8 @@ def doc_units():
     for line in open(os.path.join(ROOT, "docs", "outputs.md"), encoding="utf-8"):
         if line.startswith("## "):
             section = line[3:].strip()
-        if section not in ("history.csv", "points.csv", "contact-final.csv", "fields-\\<instant\\>.csv"):
+        if section not in ("history.csv", "points.csv", "contact-final.csv", "fields-\\<instant\\>.csv",
+                           "beam's CSV files", "ring-lame's pressure-\\<level\\>.csv", "free-ring's history.csv"):
             continue
         cells = [c.strip() for c in line.strip().strip("|").split("|")]
         if not line.startswith("| `") or len(cells) < 3:
@@ -154,6 +158,53 @@ def units_checks(got):
           and "t" not in columns and got.get("step_dtype") == "int64",
           f"(c) history DataFrame columns with units: {', '.join(columns[:4])} ... {', '.join(columns[-3:])}; "
           f"step {got.get('step_dtype')}")
+
+
+def other_scene_frames(tmp):
+    """(c) beam's, ring-lame's and free-ring's CSVs as DataFrames: every column documented with the
+    unit frames gives it, the numbers those of the files (invariants the scenes do not print)."""
+    runs = {"beam": ["-levels", "coarse"], "ring-lame": ["-levels", "l1"],
+            "free-ring": ["-tcool", "4", "-thold", "2", "-theat", "4"]}
+    documented, frames = doc_units(), {}
+    for scene, args in runs.items():
+        out = os.path.join(tmp, scene)
+        run = subprocess.run([os.path.join(ROOT, "tools", "ff"), sma.script(scene), "-out", out, "-quiet", "1", *args],
+                             cwd=ROOT, capture_output=True, text=True, timeout=120)
+        check(run.returncode == 0, f"(c) {scene} {' '.join(args)} runs (exit {run.returncode})")
+        for name in {"beam": ["phase-coarse", "dc-convergence"], "ring-lame": ["pressure-l1"],
+                     "free-ring": ["history"]}[scene]:
+            try:
+                frames[name] = sma.frame(os.path.join(out, name + ".csv"))
+            except (sma.SceneError, OSError) as e:
+                frames[name] = None
+                check(False, f"(c) sma.frame reads {scene}'s {name}.csv: {e}")
+    bad = []
+    for name, df in frames.items():
+        for column, unit in (df.attrs["units"].items() if df is not None else []):
+            bare = column[:-len(unit) - 1] if unit else column
+            if bare not in documented and column not in documented:
+                bad.append(f"{name}: {column} not in docs/outputs.md")
+            elif bare in documented and documented[bare] != unit and not (unit == "" and (
+                    documented[bare] in ("", "1") or bare in ("step", "peak_step"))):  # rows joining a count
+                bad.append(f"{name}: {column} against the page's {documented[bare]!r}")
+    check(all(df is not None for df in frames.values()) and not bad,
+          f"(c) beam's, ring-lame's and free-ring's CSVs read with units, each column as docs/outputs.md gives it: "
+          f"{bad[:4] or ', '.join(c for df in frames.values() if df is not None for c in df.columns[:2])}")
+    if any(df is None for df in frames.values()):
+        return
+    t = frames["phase-coarse"]
+    area = 0.5 * abs((t["x2_m"] - t["x1_m"]) * (t["y3_m"] - t["y1_m"]) - (t["x3_m"] - t["x1_m"]) * (t["y2_m"] - t["y1_m"]))
+    dc = frames["dc-convergence"]
+    p = frames["pressure-l1"]
+    nodal = (p["pressure_nodal_Pa"] - p["normal_force_N/m"] / p["tributary_length_m"]).abs().max() / p["pressure_nodal_Pa"].abs().max()
+    h = frames["history"]
+    balance = (h["stored_heat_J/m"] - h["boundary_heat_J/m"] - h["latent_heat_J/m"]).abs().max() \
+        / h["stored_heat_J/m"].abs().max()
+    check(abs(area.sum() - 0.1 * 0.01) <= 1e-12 and set(t["phase"]) <= {0, 1, 2} and set(dc["mesh"]) == {"coarse"}
+          and str(dc["iteration"].dtype) == "int64" and nodal <= 1e-12 and balance <= 1e-9,
+          f"(c) the frames' numbers: beam's triangles cover {area.sum():.15g} m^2 (L H = 0.001), phases "
+          f"{sorted(set(t['phase']))}, dc-convergence mesh {sorted(set(dc['mesh']))}; ring-lame pressure_nodal = "
+          f"normal force / tributary length to {nodal:.1e}; free-ring stored = boundary + latent to {balance:.1e}")
 
 
 def vtu_checks():
@@ -290,6 +341,7 @@ def main():
     with tempfile.TemporaryDirectory(prefix="python-package-") as tmp:
         got = install_and_import(tmp)
         units_checks(got)
+        other_scene_frames(tmp)
         r, f = vtu_checks()
         table = sweep_checks()
         errors = error_checks(tmp, r, f)

@@ -29,7 +29,12 @@ On sleeve-radial (300 steps, about 0.5 s a run), -g swept over 250, 500, 1000 th
   (e) ARGS holding `; touch <file>` and VALUES holding `$(touch <file>)` run nothing;
   a value whose run fails (g = -1) leaves the others done, exits 1, and sweep.json holds its error
   and the end of its log; negative values (-5e-6) are values, not flags; a value given twice is
-  refused.
+  refused;
+  (f) two parameters through make sweep (PARAM=interference VALUES='2e-4 5e-4' PARAM2=g
+  VALUES2='250 1000', -steps 60): one folder per combination, table.csv's rows in the grid's order
+  with both values first, each equal to its run's summary.json; the final pressure is Lame's closed
+  form (the summary's lame_pressure) within 2 dc_tol at each interference and the same for both g;
+  the panel figures exist; PARAM2 without VALUES2 and PARAM2 = PARAM fail naming them, before any run.
 Writes results/checks/sweep.json.
 """
 import json
@@ -243,7 +248,38 @@ def main():
         check(parsed["values"] == ["-5e-6", "0", "5e-6"] and parsed["jobs"] == 1
               and twice.returncode == 2 and "500 of -g are given twice" in twice.stderr,
               f"negative values are values ({parsed['values']}); a value given twice: {first_error(twice)}")
-        measured = {"first_contact_steps": first, "austenite_steps": austenite, "final_pressures_Pa": finals,
+        # (f) Two parameters through make sweep: the grid, one folder per combination.
+        grid_out = os.path.join(tmp, "grid")
+        interferences, gs = ["2e-4", "5e-4"], ["250", "1000"]
+        grid = make("SCENE=sleeve-radial", "PARAM=interference", f"VALUES={' '.join(interferences)}", "PARAM2=g",
+                    f"VALUES2={' '.join(gs)}", "ARGS=-steps 60", f"OUT={grid_out}")
+        combos = [(i, g) for i in interferences for g in gs]
+        grid_table = rows(os.path.join(grid_out, "table.csv")) if grid.returncode == 0 else []
+        grid_runs = [sma.read(os.path.join(grid_out, f"interference={i},g={g}")).summary for i, g in combos] \
+            if grid.returncode == 0 else []
+        grid_bad = table_matches(grid_table, grid_runs) if grid_table else ["no table"]
+        grid_finals = {c: r["final_pressure_mean"] for c, r in zip(combos, grid_runs)}
+        lame_error = max((abs(r["final_pressure_mean"] / r["lame_pressure"] - 1) for r in grid_runs), default=1)
+        by_g = max((abs(grid_finals[(i, gs[0])] / grid_finals[(i, gs[1])] - 1) for i in interferences), default=1) \
+            if grid_runs else 1
+        dc_tol = max((r["parameters"]["dc_tol"] for r in grid_runs), default=0)
+        check(grid.returncode == 0 and [(row["interference"], row["g"]) for row in grid_table] == combos
+              and list(grid_table[0])[:2] == ["interference", "g"] and not grid_bad
+              and lame_error <= 2 * dc_tol and by_g <= 2 * dc_tol
+              and all(os.path.isfile(os.path.join(grid_out, f)) for f in ("force-temperature.png", "final-pressure.png")),
+              f"(f) make sweep PARAM=interference PARAM2=g: {len(grid_table)} rows in the grid's order, each its run's "
+              f"summary ({grid_bad[:2] or 'every column'}); final pressure = Lame within {lame_error:.1e}, "
+              f"independent of g within {by_g:.1e} (<= 2 dc_tol); panel figures written "
+              f"{first_error(grid) if grid.returncode else ''}")
+        no_values2 = make("SCENE=sleeve-radial", "PARAM=g", "VALUES=250", "PARAM2=interference",
+                          f"OUT={os.path.join(tmp, 'y')}")
+        same_param = sweep_tool("sleeve-radial", "g", "250", "--param2", "g", "--values2", "500")
+        check(no_values2.returncode == 2 and "needs both PARAM2" in no_values2.stderr
+              and same_param.returncode == 2 and "PARAM2 'g' is PARAM too" in same_param.stderr
+              and not os.path.exists(os.path.join(tmp, "y")),
+              f"(f) PARAM2 without VALUES2: {first_error(no_values2)}; PARAM2 = PARAM: {first_error(same_param)}")
+        measured = {"grid_final_pressures_Pa": [grid_finals.get(c) for c in combos],
+                    "first_contact_steps": first, "austenite_steps": austenite, "final_pressures_Pa": finals,
                     "final_relative_spread": spread, "final_spread_bound": bound,
                     "table_columns": list(table[0])}
     record("sweep", {"test": "sweep", **measured})

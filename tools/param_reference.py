@@ -19,8 +19,9 @@ lists as documented.
 
 Layout of the file: the sleeve scenes (edp/scenes/sleeve-*.edp) share most options, so one table
 holds every option read by at least half of them with the default (and meaning) most of them
-have, and a short table per sleeve scene lists only what differs; the other scripts get a full
-table each. Deterministic: the same sources give the same bytes. About 1 s (one FreeFEM start per
+have, and a short table per sleeve scene and sleeve variant lists only what differs; another
+variant lists only what differs from the scene it derives from (base_scene: beam-p2 from beam,
+ring-lobed from ring-lame); the other scripts get a full table each. Deterministic: the same sources give the same bytes. About 1 s (one FreeFEM start per
 script, run in parallel).
 
 Regenerate with `make docs`; tests/param_reference_test.py fails when the file is out of date.
@@ -148,9 +149,10 @@ def full_table(options):
     return out
 
 
-def differences(name, s, common):
-    """The section of a sleeve script: its options that are not in the shared table, or whose type,
-    default or meaning differ from it, then the shared options it does not read."""
+def differences(name, s, common, against="the shared table"):
+    """The section of a script read against a table of options (the sleeve scenes' shared table, or
+    the scene a variant derives from): its options that are not in it, or whose type, default or
+    meaning differ from it, then the options of the table it does not read."""
     names = {o["name"] for o in s["options"]}
     rows = []
     for o in s["options"]:
@@ -161,12 +163,27 @@ def differences(name, s, common):
         rows.append(f"| `{o['name']}` | {o['type']} | {shown_default(o['type'], o['default'])} | {meaning} |")
     missing = [option for option in common if option not in names]
     out = [f"### {name}", "", f"`{s['path']}`: {len(s['options'])} options; "
-           f"{len(rows)} differ from the shared table" + (":" if rows else "."), ""]
+           f"{len(rows)} differ from {against}" + (":" if rows else "."), ""]
     if rows:
         out += ["| option | type | default | meaning |", "|---|---|---|---|"] + rows + [""]
     if missing:
         out += ["Does not read: " + ", ".join(f"`{m}`" for m in missing) + ".", ""]
     return out
+
+
+def base_scene(name, scenes):
+    """The scene a variant derives from: the one named by the variant's first word (beam-p2: beam)
+    or, failing that, the only scene whose name starts with that word (ring-lobed: ring-lame)."""
+    word = name.split("-")[0]
+    if word in scenes:
+        return word
+    named = [n for n in scenes if n.startswith(word + "-")]
+    return named[0] if len(named) == 1 else None
+
+
+def as_table(options):
+    """A scene's options in the form of the shared table (for differences())."""
+    return {o["name"]: {"default": (o["type"], o["default"]), "meaning": o["meaning"]} for o in options}
 
 
 def sections_of(text):
@@ -223,10 +240,19 @@ def markdown(all_scripts):
         if not chosen:
             continue
         out += [f"## {title}", ""]
+        if kind == "variant":
+            out += ["Each variant lists only what differs from the table it derives from: a sleeve variant from",
+                    "the sleeve scenes' shared table, another from its scene's (\"as above\": the same meaning).", ""]
         for name, s in chosen.items():
             if common and kind == "variant" and name.startswith("sleeve-"):
                 # A sleeve variant reads the sleeve scenes' options: only what differs is listed.
                 out += differences(name, s, common)
+                continue
+            base = base_scene(name, {n: o for n, o in others.items() if o["kind"] == "scene"}) \
+                if kind == "variant" else None
+            if base:
+                # Another variant: only what differs from the scene it derives from.
+                out += differences(name, s, as_table(others[base]["options"]), f"{base}'s table (above)")
                 continue
             out += [f"### {name}", "", f"`{s['path']}`: {len(s['options'])} options.", ""]
             if kind == "ensemble":

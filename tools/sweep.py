@@ -1,10 +1,10 @@
 #!/usr/bin/python3
-"""Sweeps one option of a scene: runs each value (in parallel up to the cores), then writes a table
-and overlay figures.
+"""Sweeps one option of a scene, or two over their grid: runs each value (in parallel up to the
+cores), then writes a table and overlay figures.
 
-Usage: tools/sweep.py SCENE PARAM VALUE [VALUE ...] [--jobs N] [--out DIR] [--env-args NAME]
-                      [-- SCENE OPTIONS ...]
-       make sweep SCENE=... PARAM=... VALUES='...' [ARGS='...'] [JOBS=2] [OUT=dir]
+Usage: tools/sweep.py SCENE PARAM VALUE [VALUE ...] [--param2 PARAM2 --values2 'V1 V2 ...']
+                      [--jobs N] [--out DIR] [--env-args NAME] [-- SCENE OPTIONS ...]
+       make sweep SCENE=... PARAM=... VALUES='...' [PARAM2=... VALUES2='...'] [ARGS='...'] [JOBS=2] [OUT=dir]
 PARAM is an option name without its dash (g, mu, steps); a value may be negative (-5e-6). The
 options after `--` go to every run; so do those in the environment variable NAME with --env-args
 (make sweep's ARGS: split into words like a shell's, quotes grouping, but never run by one, so a
@@ -24,6 +24,11 @@ the cores). Writes DIR (default results/sweeps/<scene>-<param>):
                        (said on the console and in sweep.json)
   sweep.json           the scene, the parameter, the values, the other options, each run's folder
                        and status
+With --param2 (make sweep's PARAM2, VALUES2) every combination runs, each into
+<param>=<v>,<param2>=<w>/ of DIR (default results/sweeps/<scene>-<param>-<param2>): table.csv has one
+row per run (both values first), force-temperature.png one panel per value of PARAM2 with PARAM's
+curves overlaid, final-pressure.png the final mean pressure against PARAM, one line per value of
+PARAM2 (as sma.sweep with two options).
 Reads history.csv and summary.json only. Bad input (scene, option, value) fails before any run,
 exit 2, naming it; a value whose run fails stops nothing else: the sweep then exits 1 naming it.
 The command line of sma.sweep (python/sma/sweeps.py: the runs, the table, the figures, sweep.json;
@@ -55,7 +60,8 @@ def parse(argv):
     if "--" in argv:
         cut = argv.index("--")
         argv, extra = argv[:cut], list(argv[cut + 1:])
-    flags = {"--jobs": None, "--out": None, "--env-args": None, "--env-values": None}
+    flags = {"--jobs": None, "--out": None, "--env-args": None, "--env-values": None, "--param2": None,
+             "--values2": None, "--env-values2": None}
     positional = []
     i = 0
     while i < len(argv):
@@ -103,11 +109,24 @@ def parse(argv):
     if param in ("out", "help"):
         raise BadInput(f"PARAM '{param}' cannot be swept (-out is each run's folder DIR/<param>=<value>, "
                        "-help lists the options)")
+    param2, values2 = flags["--param2"], (flags["--values2"] or "").split()
+    if flags["--env-values2"]:
+        values2 += os.environ.get(flags["--env-values2"], "").split()
+    if param2 is not None or values2:
+        if not param2 or not values2:
+            raise BadInput("a second parameter needs both PARAM2 (--param2) and VALUES2 (--values2): "
+                           f"got PARAM2 '{param2 or ''}' and VALUES2 '{' '.join(values2)}'")
+        if param2.startswith("-"):
+            raise BadInput(f"PARAM2 '{param2}': give the option's name without its dash ({param2.lstrip('-')})")
+        if param2 in ("out", "help"):
+            raise BadInput(f"PARAM2 '{param2}' cannot be swept")
+        if param2 == param:
+            raise BadInput(f"PARAM2 '{param2}' is PARAM too: sweep two different options")
     return {"scene": positional[0], "param": param, "values": positional[2:], "jobs": jobs,
-            "out": flags["--out"], "extra": extra}
+            "out": flags["--out"], "extra": extra, "param2": param2, "values2": values2}
 
 
-def extra_options(scene, param, words):
+def extra_options(scene, params, words):
     """The -name value pairs of `words` as {name: value}, each checked against the scene."""
     pairs = {}
     i = 0
@@ -125,8 +144,8 @@ def extra_options(scene, param, words):
             raise BadInput(f"-{name} cannot be given to a sweep (each run's folder is DIR/<param>=<value>; "
                            f"OUT=dir moves DIR)" if name == "out" else
                            f"-help lists the options: tools/ff {driver.script(scene)} -help")
-        if name == param:
-            raise BadInput(f"-{param} is swept; do not also give it among the scene options")
+        if name in params:
+            raise BadInput(f"-{name} is swept; do not also give it among the scene options")
         driver.check_option(scene, name)
     return pairs
 
@@ -135,14 +154,19 @@ def main(argv):
     try:
         args = parse(argv)
         scene, param, values = args["scene"], args["param"], args["values"]
+        grid = {param: values}
+        if args["param2"]:
+            grid[args["param2"]] = args["values2"]
+        params = list(grid)
         driver.script(scene)
-        driver.check_option(scene, param)
-        fixed = extra_options(scene, param, args["extra"])
-        engine.check_grid(scene, {param: values}, fixed)  # the values, then their types
+        for p in params:
+            driver.check_option(scene, p)
+        fixed = extra_options(scene, params, args["extra"])
+        engine.check_grid(scene, grid, fixed)  # the values, then their types
     except (BadInput, driver.SceneError) as e:
         print(f"error: {e}", file=sys.stderr)
         return 2
-    out = args["out"] or os.path.join(driver.ROOT, "results", "sweeps", f"{scene}-{param}")
+    out = args["out"] or os.path.join(driver.ROOT, "results", "sweeps", "-".join([scene] + params))
     # Taken as a scene takes its -out: a folder holding anything its manifest does not list is
     # refused untouched; an earlier sweep's runs, table and figures go first.
     try:
@@ -151,7 +175,7 @@ def main(argv):
         print(f"error: {e}", file=sys.stderr)
         return 2
     try:
-        status, _, _ = engine.run_grid(out, scene, [param], {param: values}, fixed, args["jobs"],
+        status, _, _ = engine.run_grid(out, scene, params, grid, fixed, args["jobs"],
                                        record={"args": args["extra"], "options": fixed})
         return status
     except OSError as e:  # a full disk, a file-size limit: the table or a figure could not be written

@@ -23,11 +23,22 @@ UNITS = {
     "pressure_peak": "Pa",
     "T": "K", "sigma_rr": "Pa", "sigma_tt": "Pa", "T0_local": "K", "ux": "m", "uy": "m",
     "r": "m", "s": "Pa", "u": "m",
+    # beam: phase-<mesh>.csv (the triangles' vertices), dc-convergence.csv (L_II per metre of depth)
+    "x1": "m", "y1": "m", "x2": "m", "y2": "m", "x3": "m", "y3": "m",
+    "lagrangian_after_global": "J/m", "lagrangian_after_local": "J/m",
+    # ring-lame: pressure-<level>.csv
+    "pressure_nodal": "Pa",
+    # free-ring: history.csv (heats per step and metre of depth of the quarter ring)
+    "T_outside": "K", "T_mean": "K", "T_inner": "K",
+    "stored_heat": "J/m", "boundary_heat": "J/m", "latent_heat": "J/m", "dissipated_heat": "J/m",
 }
 # Counts, flags, fractions and ratios: no unit (1).
 NO_UNIT = {"step", "fraction_austenite", "fraction_m1", "fraction_m2", "contact_nodes", "tangential_over_normal",
            "fixed_point_iterations", "slip_iterations", "dc_iterations", "psor_sweeps", "last_slip_step",
-           "cone_ratio", "sticking", "peak_step", "phase", "martensite_fraction"}
+           "cone_ratio", "sticking", "peak_step", "phase", "martensite_fraction",
+           "iteration", "relative_change", "points_changed", "before_stop", "fixed_point_residual"}
+# Labels kept as text (beam's dc-convergence.csv names its mesh level).
+TEXT = {"mesh"}
 # A name ending in one of these is in that unit already (docs/outputs.md's convention).
 SUFFIXES = {"_K": "K", "_Pa": "Pa", "_m": "m", "_s": "s", "_deg": "deg"}
 
@@ -35,7 +46,7 @@ SUFFIXES = {"_K": "K", "_Pa": "Pa", "_m": "m", "_s": "s", "_deg": "deg"}
 def unit_of_column(name, path="a CSV"):
     """(the DataFrame's name of the column `name`, its unit or ""); a SceneError naming the column
     and `path` when its unit is not known."""
-    if name in NO_UNIT:
+    if name in NO_UNIT or name in TEXT:
         return name, ""
     if name in UNITS:
         return f"{name}_{UNITS[name]}", UNITS[name]
@@ -54,14 +65,14 @@ def frame(path):
     import pandas as pd
     path = os.path.abspath(path)
     try:
-        columns = _read_columns(path)
+        columns = _read_columns(path, text_columns=TEXT)
     except ResultsError as e:
         raise SceneError(str(e)) from None
     names = [unit_of_column(name, path) for name in columns]
     df = pd.DataFrame({new: columns[old] for (new, _), old in zip(names, columns)})
     for (new, _), old in zip(names, columns):
-        if old in ("step", "last_slip_step", "peak_step", "contact_nodes", "sticking") or old.endswith("_iterations") \
-                or old == "psor_sweeps":
+        if old in ("step", "last_slip_step", "peak_step", "contact_nodes", "sticking", "iteration", "points_changed",
+                   "before_stop") or old.endswith("_iterations") or old == "psor_sweeps":
             if df[new].notna().all() and (df[new] == df[new].round()).all():
                 df[new] = df[new].astype("int64")
     df.attrs["units"] = dict(names)

@@ -99,10 +99,11 @@ def read_json(path):
     return value
 
 
-def read_csv(path, skip_comment=True):
+def read_csv(path, skip_comment=True, text_columns=()):
     """{column: [float]} of a CSV with a header line (`#` lines skipped): every row must have the
-    header's number of fields, every field a finite or nan number; else a ResultsError naming the
-    file, its line and its column."""
+    header's number of fields, every field a finite or nan number (those of `text_columns`, labels
+    such as beam's `mesh`, are kept as strings); else a ResultsError naming the file, its line and
+    its column."""
     try:
         # utf-8-sig: a byte-order mark (an editor's) is not part of the first column's name
         with opened(path, newline="", encoding="utf-8-sig") as f:
@@ -125,6 +126,9 @@ def read_csv(path, skip_comment=True):
                                "(a cut or damaged file: run the scene again)")
         row = []
         for name, text in zip(header, fields):
+            if name in text_columns:
+                row.append(text)
+                continue
             try:
                 value = float(text)
             except ValueError:
