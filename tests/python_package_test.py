@@ -328,7 +328,7 @@ def error_checks(tmp, r, f):
         errors["failed run"], finished = str(e), getattr(e, "table", None)
     expected["failed run"] = f"1 of 2 runs of the sweep in {partial_out} failed:\n  {os.path.join(partial_out, 'g=-1')}: "
     wrong = {k: errors[k] for k in expected if expected[k] not in errors[k]}
-    if "-g -1 must be >= 0" not in errors["failed run"] or finished is None or list(finished["g_W/(m^2 K)"]) != [500.0]:
+    if "-g -1 must be in [0, 1e15]" not in errors["failed run"] or finished is None or list(finished["g_W/(m^2 K)"]) != [500.0]:
         wrong["failed run"] = f"{errors['failed run']}; finished runs {None if finished is None else len(finished)}"
     check(not wrong and not os.path.exists(os.path.join(tmp, "x")) and not os.path.exists(os.path.join(tmp, "s")),
           f"(f) {len(expected)} errors name the option, value, folder, file or column, before any run: "

@@ -236,7 +236,7 @@ def main():
         partial = sweep_tool("sleeve-radial", "g", "500", "-1", "--out", partial_out, "--", "-steps", "30")
         partial_runs = json.load(open(os.path.join(partial_out, "sweep.json")))["runs"]
         check(partial.returncode == 1 and [run["status"] for run in partial_runs] == ["done", "failed"]
-              and "sleeve-radial: -g -1 must be >= 0" in partial_runs[1]["error"]
+              and "sleeve-radial: -g -1 must be in [0, 1e15]" in partial_runs[1]["error"]
               and "last lines of its log" in partial_runs[1]["error"]
               and [row["g"] for row in rows(os.path.join(partial_out, "table.csv"))] == ["500"]
               and "for -g -1 failed" in partial.stderr,
