@@ -18,7 +18,8 @@
     "recovered too early at T=..., step ..." in storage; with -continue 1 it runs to the end and
     summary.json says where (storage_recovered_step, a negative storage_margin);
   * a storage too warm for the ring to clear the pipe (-storageT 205 K, below T_r): the run fails
-    saying the ring never cleared the pipe.
+    saying the ring never cleared the pipe; a cooling above the forward transformation (-coolT
+    200 K, T_f = 192.3 K at the default k): the run fails saying the cooling leaves austenite.
 Writes results/checks/sleeve_life.json.
 """
 import json
@@ -131,6 +132,12 @@ def main():
     said = done.stdout + done.stderr
     check(done.returncode != 0 and "the ring never cleared the pipe" in said,
           f"-storageT 205 K: the run fails (exit {done.returncode}) saying the ring never cleared the pipe")
+    # ---- a cooling that stays above the forward transformation ----
+    out, done = run("sleeve-life", "sleeve-life-warm-cooling", *COARSE, "-coolT", "200", "-cycles", "0")
+    said = done.stdout + done.stderr
+    check(done.returncode != 0 and "the cooling ends with an austenite fraction" in said,
+          f"-coolT 200 K (above T_f = T0 (1 - k / (rho L)) = 192.3 K): the run fails "
+          f"(exit {done.returncode}) saying the cooling leaves austenite")
     record("sleeve_life", {"test": "sleeve_life", **figures})
     finish()
 
