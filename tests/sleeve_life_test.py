@@ -14,6 +14,8 @@
   * periodicity: the pressure over the last cycle equals the one before step by step (the period a
     whole number of steps), max difference below 1e-6 of the clamping pressure, and the cycles' end
     pressures agree;
+  * a run stopped in service (-stopafter 1600) and resumed from its checkpoint gives the
+    uninterrupted run's files;
   * storage above the free ring's reverse start (-storageT T_r + 5 K): the run fails with
     "recovered too early at T=..., step ..." in storage; with -continue 1 it runs to the end and
     summary.json says where (storage_recovered_step, a negative storage_margin);
@@ -109,6 +111,21 @@ def main():
                        "periodicity_max_difference": diff, "swing": swing,
                        "service_pressure_min": s1["service_pressure_min"],
                        "pressure_at_service_Tmin": s1["pressure_at_service_Tmin"]}
+
+    # ---- a run stopped in service and resumed from its checkpoint (the life's own state included)
+    cut, done = run("sleeve-life", "sleeve-life-k1e6-cut", *COARSE, "-dissipation", "1e6", "-cycles", "3",
+                    "-checkpoint", "700", "-stopafter", "1600")
+    stopped = done.returncode
+    cut, done = run("sleeve-life", "sleeve-life-k1e6-cut", *COARSE, "-dissipation", "1e6", "-cycles", "3",
+                    "-checkpoint", "700", "-resume", "1")
+    files = ["history.csv", "fields-1-dilated.csv", "fields-2-contact.csv", "fields-final.csv"]
+    same = done.returncode == 0 and all(open(os.path.join(cut, f)).read() == open(os.path.join(life1, f)).read()
+                                        for f in files)
+    timeless = lambda d: {k: v for k, v in d.items() if "seconds" not in k and not k.startswith("loop_over")
+                          and k != "resumed_from_step"}
+    same = same and timeless(summary(cut)) == timeless(s1)
+    check(stopped == 4 and same, f"stopped after step 1600 (exit {stopped}, in service), resumed from step 1400: "
+          f"{', '.join(files)} byte-identical to the uninterrupted run, summary.json equal but its timing keys")
 
     # ---- storage above the reverse start: the run fails, or with -continue 1 says where ----
     t_r = s1["T_reverse_free"]
