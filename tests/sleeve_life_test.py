@@ -22,6 +22,8 @@
   * a storage too warm for the ring to clear the pipe (-storageT 205 K, below T_r): the run fails
     saying the ring never cleared the pipe; a cooling above the forward transformation (-coolT
     200 K, T_f = 192.3 K at the default k): the run fails saying the cooling leaves austenite.
+  * `make sweep` over -dissipation (0, 1e6, 2e6; tools/sweep.py) puts the life's figures in
+    table.csv as numbers and draws design-chart.png; more dissipation keeps more pressure cold.
 Writes results/checks/sleeve_life.json.
 """
 import json
@@ -155,6 +157,22 @@ def main():
     check(done.returncode != 0 and "the cooling ends with an austenite fraction" in said,
           f"-coolT 200 K (above T_f = T0 (1 - k / (rho L)) = 192.3 K): the run fails "
           f"(exit {done.returncode}) saying the cooling leaves austenite")
+    # ---- the design chart: a sweep over the dissipation (issue 28, item 3) ----
+    sweep_out = os.path.join(TEST_RESULTS, "sleeve-life-sweep")
+    done = subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "tools", "sweep.py"), "sleeve-life", "dissipation",
+                           "0", "1e6", "2e6", "--jobs", "2", "--out", sweep_out, "--", "-nr", "20", "-dt", "1",
+                           "-cycles", "1"], cwd=ROOT, capture_output=True, text=True)
+    table = rows(os.path.join(sweep_out, "table.csv")) if done.returncode == 0 else []
+    wanted = ["storage_margin_K", "installation_clearance_m", "clamp_pressure_Pa", "service_pressure_min_Pa",
+              "pressure_at_service_Tmin_Pa", "service_window_T_low_K", "hysteresis_width_free_K"]
+    numbers = len(table) == 3 and all(all(k in r and float(r[k]) == float(r[k]) for k in wanted) for r in table)
+    cold = [float(r["pressure_at_service_Tmin_Pa"]) for r in table] if numbers else []
+    chart = os.path.isfile(os.path.join(sweep_out, "design-chart.png"))
+    check(done.returncode == 0 and numbers and chart and cold[2] > cold[0],
+          f"make sweep over -dissipation 0 1e6 2e6: table.csv has the life's figures as numbers ({', '.join(wanted)}), "
+          f"design-chart.png drawn; pressure at the coldest service temperature "
+          f"{', '.join(f'{c / 1e6:.2f}' for c in cold)} MPa (exit {done.returncode})")
+    figures["sweep_pressure_at_service_Tmin"] = cold
     record("sleeve_life", {"test": "sleeve_life", **figures})
     finish()
 
