@@ -41,7 +41,16 @@ KEY_FIGURES = [("first_contact_step", "first_contact_step"), ("first_contact_tim
                ("T_inner_austenite", "T_inner_austenite_K"),
                ("final_pressure_mean", "final_pressure_mean_Pa"), ("peak_pressure_mean", "peak_pressure_mean_Pa"),
                ("peak_step", "peak_step"), ("final_pressure_non_uniformity", "final_pressure_non_uniformity"),
-               ("lame_pressure", "lame_pressure_Pa")]  # (the radial model: Lame's closed form at the end)
+               ("lame_pressure", "lame_pressure_Pa"),  # (the radial model: Lame's closed form at the end)
+               # the coupling's life (sleeve-life): the design chart's figures
+               ("T_forward_free", "T_forward_free_K"), ("T_reverse_free", "T_reverse_free_K"),
+               ("hysteresis_width_free", "hysteresis_width_free_K"), ("storage_margin", "storage_margin_K"),
+               ("installation_clearance", "installation_clearance_m"), ("clamp_pressure", "clamp_pressure_Pa"),
+               ("service_pressure_min", "service_pressure_min_Pa"),
+               ("pressure_at_service_Tmin", "pressure_at_service_Tmin_Pa"),
+               ("service_T_inner_min", "service_T_inner_min_K"),
+               ("service_window_T_low", "service_window_T_low_K"), ("service_window_T_high", "service_window_T_high_K"),
+               ("cycle_periodicity", "cycle_periodicity_Pa")]
 TRAILING_FIGURES = [("unconverged_loops", "unconverged_loops"), ("wall_seconds", "wall_s")]
 STEP_TIMES = {"first_contact_time": "first_contact_step", "austenite_time": "austenite_step"}
 COINCIDE = 1e-3  # relative to a curve's largest |pressure|: curves closer share a legend entry
@@ -240,6 +249,46 @@ def draw(out, scene, param, values, runs, plt, unit="", fixed=None):
     return written, [[values[i] for i in g] for g in groups]
 
 
+# The coupling's life (sleeve-life): its design figures against the swept parameter.
+DESIGN_PRESSURES = [("clamp_pressure", "clamping (end of heating)"), ("service_pressure_min", "service minimum"),
+                    ("pressure_at_service_Tmin", "at the coldest service temperature")]
+
+
+def design_chart(out, scene, param, values, runs, plt, unit="", fixed=None):
+    """design-chart.png of a one-parameter sweep of a scene whose summary has the life's figures
+    (sleeve-life) and numeric values: the pressures (MPa) and the storage margin (K) against the
+    parameter, the -minpressure line; [] for any other sweep. Returns the paths written."""
+    if not runs or not all("pressure_at_service_Tmin" in r.summary for r in runs):
+        return []
+    try:
+        x = [float(v) for v in values]
+    except (TypeError, ValueError):
+        return []
+    order = sorted(range(len(x)), key=lambda i: x[i])
+    xs = [x[i] for i in order]
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    for key, label in DESIGN_PRESSURES:
+        ys = [runs[i].summary.get(key) for i in order]
+        ax.plot(xs, [float("nan") if y is None else y / 1e6 for y in ys], marker="o", lw=1.2, label=label)
+    ax.axhline(runs[0].summary["min_pressure"] / 1e6, color="k", ls="--", lw=0.8, label="-minpressure")
+    ax.set_xlabel(f"-{param}" + (f" ({unit})" if unit else ""))
+    ax.set_ylabel("mean contact pressure (MPa)")
+    ax.grid(alpha=0.3)
+    margin = ax.twinx()
+    margin.plot(xs, [runs[i].summary["storage_margin"] for i in order], color="0.4", ls=":", marker="s",
+                lw=1.0, label="storage margin (K, right)")
+    margin.set_ylabel("storage margin: reverse start - storage T (K)")
+    handles = ax.get_legend_handles_labels()
+    extra = margin.get_legend_handles_labels()
+    ax.legend(handles[0] + extra[0], handles[1] + extra[1], fontsize=8, loc="best")
+    held = " ".join(f"-{k} {v}" for k, v in (fixed or {}).items())
+    ax.set_title(f"{scene}: design chart over -{param}" + (f"\n(all runs: {held})" if held else ""))
+    fig.tight_layout()
+    path = os.path.join(out, "design-chart.png")
+    save(fig, path, 110)
+    return [path]
+
+
 def write_json(path, record):
     """A JSON record of the folder (listed in its manifest, written under a temporary name)."""
     results_io.record(path)
@@ -362,6 +411,7 @@ def run_grid(out, scene, params, grid, fixed, jobs, record=None, say=print, warn
         if len(params) == 1:
             unit = unit_of(options[params[0]]["meaning"])
             written, groups = draw(out, scene, params[0], [combos[i][0] for i in done], runs, plt, unit, fixed)
+            written += design_chart(out, scene, params[0], [values[i][0] for i in done], runs, plt, unit, fixed)
         else:
             written = draw_grid(out, scene, params, [combos[i] for i in done], runs, rows, header, fixed, plt)
     elif runs:
