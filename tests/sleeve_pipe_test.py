@@ -16,8 +16,8 @@
    from the pipe's deformed surface is closed at the end and never negative, the reaction
    complementary to it at every step; the pressures on the two bodies are the one force over each
    body's own radius.
-4. Bad inputs: -pipeE, -pipenu, -pipeRi out of range and an elastic pipe asked of the half ring
-   (sleeve-offset) fail with one line naming the option (docs/errors.md lists them; the bad-inputs
+4. Bad inputs: -pipeE, -pipenu, -pipeRi out of range and a quarter pipe's mesh file asked of the
+   half ring (sleeve-offset -pipemesh) fail with one line naming the option (docs/errors.md lists them; the bad-inputs
    test runs its rows).
 5. The 2D scenes (the quarter ring; the pipe meshed, meshes/pipe.geo): the compound cylinders'
    pressure on 6 and 12 layers (steel shaft, plane strain), order about 2 and the rigid pipe's
@@ -304,7 +304,8 @@ def main():
          "error: sleeve-radial: -pipenu 0.5 must be in (-1, 0.5)"),
         (["edp/scenes/sleeve-radial.edp", "-pipeE", "2e11", "-pipeRi", "0.0505"],
          "error: sleeve-radial: -pipeRi 0.0505 must be in [0, -pipeA 0.0505) m"),
-        (["edp/scenes/sleeve-offset.edp", "-pipeE", "2e11"], "error: sleeve-offset: -pipeE 2e+11 needs -ring quarter"),
+        (["edp/scenes/sleeve-offset.edp", "-pipeE", "2e11", "-pipemesh", "meshes/pipe-solid.msh"],
+         "error: sleeve-offset: -pipemesh meshes/pipe-solid.msh needs -ring quarter"),
     ]
     for args, start in bad_cases:
         bad = subprocess.run([os.path.join(ROOT, "tools", "ff"), *args, "-out", os.path.join(TEST_RESULTS, "sleeve-pipe-bad")],
