@@ -44,8 +44,9 @@ SLEEVE_MESHES := meshes/sleeve-coarse.msh meshes/sleeve-quarter.msh meshes/sleev
                  meshes/sleeve-nr36.msh
 # Quarter rings with nearly degenerate triangles (docs/stability.md, case 6).
 SLIVER_MESHES := meshes/sliver-thin.msh meshes/sliver-degenerate.msh
-# The elastic pipe of the 2D scenes (-pipeE > 0; meshes/pipe.geo): a solid shaft and a wall, the
-# pipe's radius from meshes/sleeve-geometry.txt; the scenes stretch them to -pipeRi .. -pipeA.
+# Pipe mesh files for the 2D scenes' -pipemesh (meshes/pipe.geo; by default the scenes make a pipe
+# mesh that follows the ring's): a solid shaft and a wall, the pipe's radius from
+# meshes/sleeve-geometry.txt; the scenes stretch them to -pipeRi .. -pipeA.
 PIPE_MESHES := meshes/pipe-solid.msh meshes/pipe-wall.msh
 MESHES := $(BEAM_MESHES) $(RING_MESHES) $(SLEEVE_MESHES) $(SLIVER_MESHES) $(PIPE_MESHES)
 beam_opt_coarse := -setnumber lc 0.0021

@@ -37,6 +37,7 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import bench_scaling  # noqa: E402
+import bench_pullout  # noqa: E402
 from curve_error import curve_error  # noqa: E402
 import getfem_lame  # noqa: E402
 from lame import lame_pressure  # noqa: E402
@@ -535,6 +536,7 @@ def main():
 
     # ---- 7. Cost against the mesh size ----
     results["scaling"] = bench_scaling.scaling(OUT, QUICK)
+    results["pullout"] = bench_pullout.measure(OUT, QUICK)  # sleeve-axisymmetric's pull-out force (tools/bench_pullout.py)
 
     # ---- 8. sleeve-radial against numpy ----
     results["radial_numpy"] = radial_against_numpy()
@@ -894,6 +896,7 @@ def write_doc(r, plt):
         w(f"| {c['nodes']} | {1e3 * c['seconds']:.3f} |")
     w("")
     lines.extend(bench_scaling.section(r["scaling"], plt, save))
+    lines.extend(bench_pullout.section(r["pullout"], plt, save))
     w("## Iteration counts per time step")
     w("")
     w("| loop | paper | sleeve-circular (mean / max) | sleeve-elliptic-friction (mean) |")
