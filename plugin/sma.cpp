@@ -73,6 +73,9 @@
 //                                                  "" if unreadable or shorter
 //   string FileSeal(string path)                   appends "checksum <hex>" of the content
 //   string FileSealError(string path)              "" if the last line is the rest's checksum
+//   string StreamReadNumbers(ifstream f, real[int] values, string name, int integer)   reads
+//       values.n number words of a checkpoint's array into values (files.hpp read_numbers:
+//       whole decimal words, finite; integers when integer != 0); "" or the bad value named
 //   string ResultsClaim(string dir, string scene)  refuse a folder holding anything its manifest
 //                                                  does not list, lock it for this run (the lock
 //                                                  goes when the process exits), remove the
@@ -580,7 +583,7 @@ long RoundToFloat(KN<double>* const& x) {
   return changed;
 }
 
-double SmaPluginVersion() { return 10.0; }
+double SmaPluginVersion() { return 11.0; }
 
 // FreeFEM's time() has a resolution of one second and clock() counts CPU time; timings of the
 // scenes are wall-clock seconds from a monotonic clock.
@@ -612,6 +615,11 @@ string* FileChecksum(Stack stack, string* const& path, double const& length) {
 }
 string* FileSeal(Stack stack, string* const& path) { return NewString(stack, sma::files::seal(*path)); }
 string* FileSealError(Stack stack, string* const& path) { return NewString(stack, sma::files::seal_error(*path)); }
+string* StreamReadNumbers(Stack stack, std::istream* const& in, KN<double>* const& values, string* const& name,
+                          long const& integer) {
+  return NewString(stack, sma::files::read_numbers(*in, values->N() ? &(*values)[0] : nullptr,
+                                                   (std::size_t)values->N(), integer != 0, *name));
+}
 string* FileTruncate(Stack stack, string* const& path, double const& length) {
   return NewString(stack, sma::files::truncate_file(*path, std::llround(length)));
 }
@@ -724,6 +732,7 @@ static void Load_Init() {
   Global.Add("FileChecksum", "(", new OneOperator2s_<S, S, double>(FileChecksum));
   Global.Add("FileSeal", "(", new OneOperator1s_<S, S>(FileSeal));
   Global.Add("FileSealError", "(", new OneOperator1s_<S, S>(FileSealError));
+  Global.Add("StreamReadNumbers", "(", new OneOperator4s_<S, std::istream*, A, S, long>(StreamReadNumbers));
   Global.Add("ResultsClaim", "(", new OneOperator2s_<S, S, S>(ResultsClaim));
   Global.Add("ResultsClaimResumed", "(", new OneOperator3s_<S, S, S, S>(ResultsClaimResumed));
   Global.Add("ResultsRecord", "(", new OneOperator1s_<S, S>(ResultsRecord));

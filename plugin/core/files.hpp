@@ -6,14 +6,17 @@
 #pragma once
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <csignal>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
 #include <fnmatch.h>
 #include <fstream>
+#include <istream>
 #include <iterator>
 #include <sstream>
 #include <string>
@@ -616,6 +619,49 @@ inline std::string seal_error(const std::string& path) {
   if (last.substr(std::strlen(seal_word)) != sum)
     return "was changed after it was written (its content's checksum is " + sum + ", its last line says " +
            last.substr(std::strlen(seal_word)) + ")";
+  return {};
+}
+
+// Whether `word` is a whole decimal number, [+-]digits[.digits][(e|E)[+-]digits] with a digit
+// before the exponent, or [+-]digits when `integer` (edp/lib/errors.idp IsNumberWord, the same
+// rule): strtod alone would read "abc" as 0, "5x" as 5, and accept "nan", "inf", hex.
+inline bool number_word(const std::string& word, bool integer) {
+  std::size_t i = 0, digits = 0;
+  const std::size_t n = word.size();
+  auto digit = [&](std::size_t k) { return k < n && word[k] >= '0' && word[k] <= '9'; };
+  if (i < n && (word[i] == '+' || word[i] == '-')) ++i;
+  for (; digit(i); ++i) ++digits;
+  if (!integer && i < n && word[i] == '.')
+    for (++i; digit(i); ++i) ++digits;
+  if (digits == 0) return false;
+  if (!integer && i < n && (word[i] == 'e' || word[i] == 'E')) {
+    ++i;
+    if (i < n && (word[i] == '+' || word[i] == '-')) ++i;
+    std::size_t exponent_digits = 0;
+    for (; digit(i); ++i) ++exponent_digits;
+    if (exponent_digits == 0) return false;
+  }
+  return i == n;
+}
+
+// Reads the `n` values of the array `name` of a checkpoint (edp/problems/sleeve/checkpoint.idp:
+// one white-space separated word each) from `in` into `values`: each a whole number word
+// (number_word; an integer one when `integer`) and finite. "" or the reason naming the first bad
+// value: "name[i] is 'word', not a number", "name[i] 'word' overflows a double", "it ends at name[i]".
+// A loop over the words in the script cost about 70 us a value (2.6 s for the 39 000 values of
+// an 18-layer sleeve's checkpoint); here it is the stream's own word reads and strtod.
+inline std::string read_numbers(std::istream& in, double* values, std::size_t n, bool integer,
+                                const std::string& name) {
+  std::string word;
+  for (std::size_t i = 0; i < n; ++i) {
+    auto what = [&] { return name + "[" + std::to_string(i) + "]"; };  // (built for a message only)
+    if (!(in >> word)) return "it ends at " + what();
+    if (!number_word(word, integer))
+      return what() + " is '" + word + "', not " + (integer ? "an integer" : "a number");
+    const double value = std::strtod(word.c_str(), nullptr);
+    if (!(std::fabs(value) <= 1.7976931348623157e308)) return what() + " '" + word + "' overflows a double";
+    values[i] = value;
+  }
   return {};
 }
 

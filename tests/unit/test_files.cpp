@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -357,4 +358,43 @@ TEST(Files, LinksLookalikesAndOddNamesAreRefusedUntouched) {
   EXPECT_FALSE(m.legacy);
   EXPECT_EQ(m.scene, "beam");
   EXPECT_EQ(m.entries, std::vector<std::string>{"summary.json"});
+}
+
+// The checkpoint's number words (edp/problems/sleeve/checkpoint.idp through StreamReadNumbers):
+// the words the suite writes read back as the same doubles, anything else refused naming the value.
+TEST(Files, NumberWordIsAWholeDecimalNumber) {
+  for (const char* w : {"0", "-1", "+7", "3.", ".5", "-1.2345678901234567e-05", "1E+300", "6.0883720704432680e1"})
+    EXPECT_TRUE(files::number_word(w, false)) << w;
+  for (const char* w : {"", "-", ".", "e5", "1e", "1e+", "5x", "1.2.3", "nan", "inf", "-inf", "0x10", "1 ", " 1", "1,5"})
+    EXPECT_FALSE(files::number_word(w, false)) << "'" << w << "'";
+  for (const char* w : {"0", "30", "-2", "+4"}) EXPECT_TRUE(files::number_word(w, true)) << w;
+  for (const char* w : {"2.5", "1e3", "3.", "", "+", "7x"}) EXPECT_FALSE(files::number_word(w, true)) << w;
+}
+
+TEST(Files, ReadNumbersReadsBackWhatWasWrittenAndNamesTheBadValue) {
+  // 17 significant digits (the checkpoint's precision): each value back bit for bit, and the
+  // stream left at the word after the array (the script reads the next array's name there).
+  std::vector<double> written = {0.0, -1.0 / 3.0, 6.02214076e23, 4.9e-324, -1.7976931348623157e308, 293.15};
+  std::stringstream text;
+  text.precision(17);
+  for (double v : written) text << v << "\n";
+  text << "next 2\n";
+  std::vector<double> read(written.size(), -99.0);
+  EXPECT_EQ(files::read_numbers(text, read.data(), read.size(), false, "T"), "");
+  EXPECT_EQ(read, written);
+  std::string following;
+  text >> following;
+  EXPECT_EQ(following, "next");
+
+  auto error = [](const std::string& words, std::size_t n, bool integer) {
+    std::istringstream in(words);
+    std::vector<double> values(n);
+    return files::read_numbers(in, values.data(), n, integer, "u");
+  };
+  EXPECT_EQ(error("1 2 3", 3, true), "");
+  EXPECT_EQ(error("1 2 abc", 3, false), "u[2] is 'abc', not a number");
+  EXPECT_EQ(error("1 2.5", 2, true), "u[1] is '2.5', not an integer");
+  EXPECT_EQ(error("1 1e400", 2, false), "u[1] '1e400' overflows a double");
+  EXPECT_EQ(error("1 2", 3, false), "it ends at u[2]");
+  EXPECT_EQ(error("", 0, false), "");
 }
