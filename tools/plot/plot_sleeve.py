@@ -15,13 +15,15 @@
                          instants (the paper's Fig. 13-14, 19-20, 23-24, 27-28, 31-32, 35-36)
 The data files are in SI units (K, Pa, m, s); the pictures in degrees C, MPa, mm, um, s.
 Prints each figure's curve labels (the legend) on stdout.
-Usage: tools/plot_sleeve.py results/<scene>
+Usage: tools/plot/plot_sleeve.py results/<scene>
 """
-import results_io
-import glob
-import math
 import os
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tools/: results_io, units
+import results_io  # noqa: E402
+import glob
+import math
 
 import matplotlib
 
@@ -552,7 +554,7 @@ def main():
     if summary.get("scene") == "sleeve-radial":
         # the radial model writes no points.csv, contact-final.csv or VTU: its own plot tool
         raise results_io.ResultsError(f"{outdir} holds a run of sleeve-radial, whose figures are "
-                                      "tools/plot_sleeve-radial.py's (make run draws them)")
+                                      "tools/plot/plot_sleeve-radial.py's (make run draws them)")
     force_temperature(outdir, summary)
     displacement(outdir, summary)
     iterations(outdir, summary)

@@ -4,7 +4,7 @@ and one line on what agrees and what does not, every number read from this run's
 
 Reads results/<scene>/summary.json and PNGs (make figures runs the scenes at their defaults) and
 results/checks/*.json (written by the tests, which make figures runs too); copies the PNGs it
-shows to docs/figures/. Usage: tools/figures.py  (from the repository root)
+shows to docs/figures/. Usage: tools/docs/figures.py  (from the repository root)
 """
 import json
 import math
@@ -12,12 +12,16 @@ import os
 import shutil
 import sys
 
-from plot_sleeve import coincident_groups, inner_surface, point_labels, read_csv, translation_along_x
-from units import KELVIN_AT_0C
+TOOLS = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+# tools/ (units), the sleeve's plot helpers (tools/plot) and the least-squares fit (tools/bench/oracles).
+sys.path[:0] = [TOOLS, os.path.join(TOOLS, "plot"), os.path.join(TOOLS, "bench", "oracles")]
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plot_sleeve import coincident_groups, inner_surface, point_labels, read_csv, translation_along_x  # noqa: E402
+from units import KELVIN_AT_0C  # noqa: E402
 from fits import r_squared  # noqa: E402
 import claims  # noqa: E402
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 RESULTS = os.path.join(ROOT, "results")
 DOCS = os.path.join(ROOT, "docs")
 missing = []
@@ -113,7 +117,7 @@ def curve_phases(run, summary, point):
 
 
 def coincidence(run, summary):
-    """The force-temperature legend of tools/plot_sleeve.py: [(label, members)]."""
+    """The force-temperature legend of tools/plot/plot_sleeve.py: [(label, members)]."""
     p = run["points"]
     names = [k[len("pressure_"):-len("_Pa")] for k in p if k.startswith("pressure_")]
     labels = point_labels(summary, names)
@@ -149,7 +153,7 @@ def mpa(x):
 
 def main():
     out = ["# The paper's figures and ours", "",
-           "Written by `make figures` (tools/figures.py) from the results of that run: every scene at its",
+           "Written by `make figures` (tools/docs/figures.py) from the results of that run: every scene at its",
            "defaults (1500 steps on the default mesh, the default phase model `-phasemodel fraction`:",
            "each triangle's martensite fraction held by the heat balance, a force curve that converges",
            "with the mesh and the step, docs/benchmarks.md) and the tests' records in results/checks/.",
@@ -167,7 +171,7 @@ def main():
            "are per metre of thickness divided by the contact length (Pa), plotted in MPa (the paper",
            "plots GPa); the figures and their files: docs/outputs.md.", ""]
 
-    # ---- The claims, statement by statement (tools/claims.py) ----
+    # ---- The claims, statement by statement (tools/docs/claims.py) ----
     out += claims.table()
     out += ["## Figure by figure", ""]
 

@@ -10,12 +10,14 @@ results/sleeve-radial/:
   fields.png             radial profiles of sigma_rr, sigma_tt (MPa), T (C) and the phase (the
                          signed martensite fraction: M1 > 0, A, M2 < 0) at the three instants
                          (end of dilatation, during contact, end)
-Usage: tools/plot_sleeve-radial.py results/sleeve-radial [other/history.csv ...]
+Usage: tools/plot/plot_sleeve-radial.py results/sleeve-radial [other/history.csv ...]
 """
-import results_io
-import glob
 import os
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tools/: results_io, units
+import results_io  # noqa: E402
+import glob
 
 import matplotlib
 

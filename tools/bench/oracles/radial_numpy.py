@@ -1,9 +1,9 @@
 #!/usr/bin/python3
 """The radial sleeve model (edp/scenes/sleeve-radial.edp) computed again in numpy, from its
 equations: an independent implementation of the same scheme, to check sleeve-radial against and to
-time it against (tools/bench.py, "sleeve-radial against numpy"; tests/radial_numpy_test.py).
+time it against (tools/bench/bench.py, "sleeve-radial against numpy"; tests/radial_numpy_test.py).
 
-    tools/radial_numpy.py [-nr 160] [-steps 1000] [-out DIR] [-name value ...]
+    tools/bench/oracles/radial_numpy.py [-nr 160] [-steps 1000] [-out DIR] [-name value ...]
 
 Same options, defaults and meanings as the scene (the subset of the radial model: -nr -steps
 -tend -dt -theta -rannacher -dctol -dcmaxit -fptol -fpmaxit -E -nu -rho -a -latent -T0 -Tc -C0 -k
@@ -60,7 +60,7 @@ from scipy.linalg import lapack
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from sleeve_geometry import sleeve_geometry  # noqa: E402
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
 
 # The radial scene's options and defaults (edp/problems/sleeve/parameters.idp, sleeve-radial.edp).
 DEFAULTS = {
@@ -384,7 +384,7 @@ def run(p):
     austenite_step = int(not_austenite[-1]) + 2 if not_austenite.size and not_austenite[-1] + 1 < steps else \
         (1 if not not_austenite.size else None)
     summary = {
-        "scene": "sleeve-radial (numpy, tools/radial_numpy.py)",
+        "scene": "sleeve-radial (numpy, tools/bench/oracles/radial_numpy.py)",
         "parameters": {k: v for k, v in p.items() if k != "out"},
         "nr": nr, "nodes": nr + 1, "n_steps": steps, "dt": dt, "interference": -gap0,
         "loop_seconds": loop_seconds,
