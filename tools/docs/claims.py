@@ -8,7 +8,7 @@ the head of docs/figures.md.
 Usage: tools/docs/claims.py --run   the on/off and explanation runs (make figures; about 3 min), one at
                                a time, each failure named with its log
        (tools/docs/figures.py imports table())
-The measures are those of tools/docs/paper_scale_fit.py (docs/paper-scale.md), read from these runs.
+The measures are those of tools/docs/paper_scale_metrics.py (docs/paper-scale.md), read from these runs.
 """
 import json
 import math
@@ -20,7 +20,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tools/: results_io
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import results_io  # noqa: E402
-from paper_scale_fit import curve, ellipse_metrics, gvar_crossing, offset_metrics, reversion_start, summ, tmin_position  # noqa: E402
+from paper_scale_metrics import curve, ellipse_metrics, gvar_crossing, offset_metrics, reversion_start, summ, tmin_position  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 RESULTS = os.path.join(ROOT, "results")
