@@ -85,7 +85,7 @@ def chatter_of(s):
 
 
 def save(fig, name):
-    """docs/benchmarks/<name> (plot_sleeve.save: temporary name, renamed; closes the figure);
+    """docs/benchmarks/<name> (sma.plotting.save: temporary name, renamed; closes the figure);
     returns its path relative to docs/."""
     os.makedirs(PNG_DIR, exist_ok=True)
     fig.tight_layout()

@@ -18,8 +18,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_sleeve import save  # noqa: E402
+from sma.plotting import save  # noqa: E402
 
 PHASE_COLOURS = {0: "0.6", 1: "black", 2: "white"}
 

@@ -25,13 +25,14 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_sleeve import fields_time, force_panels, read_csv, save, state_values  # noqa: E402
+from sleeve_curves import fields_time, force_panels, read_csv, state_values  # noqa: E402
+from sma.plotting import save  # noqa: E402
 from units import celsius  # noqa: E402
 
 
 def force_temperature(outdir, summary, others):
     """Left: pressure against the inner-surface temperature; right: against time, zoomed on the
-    transient; this run's four phases shaded (plot_sleeve.force_panels)."""
+    transient; this run's four phases shaded (sleeve_curves.force_panels)."""
     h = read_csv(os.path.join(outdir, "history.csv"))
     curves = {f"1D, nr {summary['nr']}, {summary['n_steps']} steps": (h["T_inner_mean"], h["pressure_mean"], h["t"])}
     for path in others:

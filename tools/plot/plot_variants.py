@@ -23,14 +23,13 @@ from matplotlib.collections import PolyCollection  # noqa: E402
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tests"))
 from checklib import rows  # noqa: E402
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import plot_sleeve  # noqa: E402
+from sma.plotting import save as save_png  # noqa: E402
 
 PHASE_COLOURS = {0: "0.6", 1: "black", 2: "white"}  # the paper's Fig. 9: grey, black, white
 
 
 def save(fig, path):
-    plot_sleeve.save(fig, path, 120, tight=True)
+    save_png(fig, path, 120, tight=True)
     print("wrote", path)
 
 
