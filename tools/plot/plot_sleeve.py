@@ -22,33 +22,20 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tools/: results_io, units
 import results_io  # noqa: E402,F401
-import matplotlib  # noqa: E402
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from sleeve_curves import force_temperature, read_csv  # noqa: E402
+from sleeve_curves import force_temperature, iterations_figure  # noqa: E402
 from sleeve_fields import fields  # noqa: E402
 from sleeve_surface import displacement  # noqa: E402
-from sma.plotting import save  # noqa: E402
 
 
 def iterations(outdir, summary):
-    h = read_csv(os.path.join(outdir, "history.csv"))
-    fig, ax = plt.subplots(figsize=(7, 4))
-    for key, label in (("fixed_point_iterations", "heat <-> phases"),
-                       ("slip_iterations", "slip threshold"), ("dc_iterations", "DC"),
-                       ("psor_sweeps", "PSOR sweeps")):
-        ax.plot(h["t"], h[key], lw=0.8, label=label)
-    ax.set_yscale("symlog")
-    ax.set_xscale("symlog", linthresh=max(1.0, 20 * summary["parameters"]["dt"]))
-    ax.set_xlabel("time t (s), logarithmic beyond the first steps")
-    ax.set_ylabel("iterations in the step")
-    ax.set_title(f"{summary['scene']}: iterations per step")
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    save(fig, os.path.join(outdir, "iterations.png"), 120)
+    """The three nested loops and PSOR, per step."""
+    iterations_figure(outdir, summary, (("fixed_point_iterations", "heat <-> phases"),
+                                        ("slip_iterations", "slip threshold"), ("dc_iterations", "DC"),
+                                        ("psor_sweeps", "PSOR sweeps")),
+                      max(1.0, 20 * summary["parameters"]["dt"]), "time t (s), logarithmic beyond the first steps",
+                      log_counts=True)
 
 
 def main():

@@ -200,3 +200,21 @@ def force_temperature(outdir, summary):
     save(fig, os.path.join(outdir, "force-temperature.png"), 120)
     print("force-temperature.png curves: " + " | ".join(legend))
 
+
+def iterations_figure(outdir, summary, loops, linthresh, xlabel, log_counts):
+    """iterations.png: the iteration counts per step of `loops` ((history.csv column, label), ...)
+    against time, on a time axis linear up to `linthresh` (s) and logarithmic beyond; log_counts:
+    the counts on a logarithmic axis too."""
+    h = read_csv(os.path.join(outdir, "history.csv"))
+    fig, ax = plt.subplots(figsize=(7, 4))
+    for key, label in loops:
+        ax.plot(h["t"], h[key], lw=0.8, label=label)
+    if log_counts:
+        ax.set_yscale("symlog")
+    ax.set_xscale("symlog", linthresh=linthresh)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel("iterations in the step")
+    ax.set_title(f"{summary['scene']}: iterations per step")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    save(fig, os.path.join(outdir, "iterations.png"), 120)
