@@ -73,7 +73,7 @@ sleeve_opt_half := $(sleeve_opt_quarter) -setnumber half 1
 # 12 are used by tests/sleeve_convergence_test.py, 36 by tests/step_solver_test.py (1 s steps: 1440
 # points transform at once) and the benchmarks, 27 by the benchmarks only; -aniso36 is
 # sleeve-aniso with twice its layers). nr 72, 108 and 140 (26k, 59k and 99k nodes) extend the
-# scaling series of the benchmarks (tools/bench_scaling.py: 18, 36, 72, 108, 140 layers); made by
+# scaling series of the benchmarks (tools/bench/scaling.py: 18, 36, 72, 108, 140 layers); made by
 # make bench only.
 BENCH_MESHES := meshes/sleeve-nr27.msh meshes/sleeve-aniso36.msh \
                 meshes/sleeve-nr72.msh meshes/sleeve-nr108.msh meshes/sleeve-nr140.msh
@@ -171,11 +171,11 @@ check-scene:
 IS_VARIANT = $(filter $(SCENE),$(VARIANTS))
 RUN_SCRIPT = $(if $(IS_VARIANT),edp/variants,edp/scenes)/$(SCENE).edp
 RUN_RESULTS = $(if $(IS_VARIANT),results/variants,results)/$(SCENE)
-# The figures of the scene: its own tools/plot_<scene>.py, else the sleeve's or the variants' (the
+# The figures of the scene: its own tools/plot/plot_<scene>.py, else the sleeve's or the variants' (the
 # output folder is appended).
-RUN_PLOT = $(if $(wildcard tools/plot_$(SCENE).py),$(PYTHON) tools/plot_$(SCENE).py,$(if \
-           $(filter sleeve-%,$(SCENE)),$(PYTHON) tools/plot_sleeve.py,$(if $(IS_VARIANT),$(PYTHON) \
-           tools/plot_variants.py --only $(SCENE) results/variants)))
+RUN_PLOT = $(if $(wildcard tools/plot/plot_$(SCENE).py),$(PYTHON) tools/plot/plot_$(SCENE).py,$(if \
+           $(filter sleeve-%,$(SCENE)),$(PYTHON) tools/plot/plot_sleeve.py,$(if $(IS_VARIANT),$(PYTHON) \
+           tools/plot/plot_variants.py --only $(SCENE) results/variants)))
 # ARGS reaches tools/run_scene.py through the environment, never pasted into the recipe: a `;` or
 # a `$(...)` in it is a character, not a command (docs/errors.md). run_scene.py draws the figures
 # from the folder the run wrote (a -out among ARGS included).
@@ -222,17 +222,17 @@ sweep: check-scene plugin meshes python
 
 # Speed against error, all measured in one run: docs/benchmarks.md, results/bench/summary.json.
 bench: plugin meshes $(BENCH_MESHES)
-	@$(PYTHON) tools/bench.py
+	@$(PYTHON) tools/bench/bench.py
 
 # The Richardson extrapolation of the radial force curve, its assumptions tested, the on/off scheme
-# and the defaults measured against it (tools/reference_curve.py; about 40 s).
+# and the defaults measured against it (tools/bench/reference_curve.py; about 40 s).
 reference: plugin meshes
-	@$(PYTHON) tools/reference_curve.py
+	@$(PYTHON) tools/bench/reference_curve.py
 
 # The paper's own scale: a, the faces' heat exchange and the random spread fitted to the paper's
-# statements (tools/paper_scale_fit.py, about 12 min; runs in /tmp/paper-scale-fit).
+# statements (tools/docs/paper_scale_fit.py, about 12 min; runs in /tmp/paper-scale-fit).
 paper-scale: plugin meshes
-	@$(PYTHON) tools/paper_scale_fit.py
+	@$(PYTHON) tools/docs/paper_scale_fit.py
 
 # Monte Carlo over the seeds of sleeve-random-threshold, seeds round-robin over NP MPI ranks
 # (docs/ensembles.md). OpenMPI refuses root without the two ALLOW variables; an idle rank yields
@@ -258,20 +258,20 @@ ensemble: plugin meshes
 	  FF_INCLUDEPATH="$$(pwd -P)/edp/lib;$$(pwd -P)/edp/model;$$(pwd -P)/edp/solvers;$$(pwd -P)/edp/problems;/usr/include/freefem++/idp;./" \
 	  FF_LOADPATH="$$(pwd -P)/plugin/build;/usr/lib/freefem++;./" \
 	  $(PYTHON) tools/run_scene.py edp/ensemble/sleeve-random-ensemble.edp results/sleeve-random-ensemble \
-	  $(PYTHON) tools/plot_ensemble.py
+	  $(PYTHON) tools/plot/plot_ensemble.py
 
 figures: test
 	@for scene in $(FIGURE_SCENES); do \
 	  $(MAKE) --no-print-directory run SCENE=$$scene ARGS='-quiet 1' || exit 1; done
-	@$(PYTHON) tools/claims.py --run
-	@$(PYTHON) tools/figures.py
+	@$(PYTHON) tools/docs/claims.py --run
+	@$(PYTHON) tools/docs/figures.py
 
 # Every option of every scene, variant, benchmark and the ensemble, as each prints them with
-# -help tsv (tools/param_reference.py says how; about 1 s); the sma package's API page from its
-# docstrings (tools/python_api.py).
+# -help tsv (tools/docs/param_reference.py says how; about 1 s); the sma package's API page from its
+# docstrings (tools/docs/python_api.py).
 docs: plugin
-	@$(PYTHON) tools/param_reference.py
-	@$(PYTHON) tools/python_api.py
+	@$(PYTHON) tools/docs/param_reference.py
+	@$(PYTHON) tools/docs/python_api.py
 
 clean:
 	rm -rf build plugin/build meshes/*.msh results

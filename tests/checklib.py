@@ -6,7 +6,10 @@ import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+# The command-line modules (tools/: sweep, sma_driver, units, ...) and the independent oracles the
+# tests check against (tools/bench/oracles: lame, curve_error, fits, sleeve_geometry).
 sys.path.insert(0, os.path.join(ROOT, "tools"))
+sys.path.insert(0, os.path.join(ROOT, "tools", "bench", "oracles"))
 from units import KELVIN_AT_0C  # noqa: E402,F401  (re-exported for the tests)
 from fits import r_squared  # noqa: E402,F401  (re-exported for the tests)
 from sleeve_geometry import sleeve_geometry  # noqa: E402,F401  (re-exported for the tests)

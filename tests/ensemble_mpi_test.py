@@ -159,11 +159,11 @@ def main():
           f"{min(table['peak_over_final']):.12f} to {max(table['peak_over_final']):.12f}")
 
     # The histogram is drawn from these files.
-    plot = subprocess.run(["/usr/bin/python3", "tools/plot_ensemble.py", mpi["out"]], cwd=ROOT,
+    plot = subprocess.run(["/usr/bin/python3", "tools/plot/plot_ensemble.py", mpi["out"]], cwd=ROOT,
                           capture_output=True, text=True)
     png = os.path.join(mpi["out"], "histogram.png")
     check(plot.returncode == 0 and os.path.getsize(png) > 10000 if os.path.isfile(png) else False,
-          f"tools/plot_ensemble.py draws histogram.png (exit {plot.returncode})")
+          f"tools/plot/plot_ensemble.py draws histogram.png (exit {plot.returncode})")
 
     # A failing child: seed 2's FreeFEM is killed while it runs (a crash), in a folder that holds
     # an earlier ensemble's results (its manifest lists them: they go, nothing is refused). The

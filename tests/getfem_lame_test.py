@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""ring-lame against an independent solver: GetFEM (tools/getfem_lame.py) on the same meshes.
+"""ring-lame against an independent solver: GetFEM (tools/bench/oracles/getfem_lame.py) on the same meshes.
 
 Asserts: on l1 and l2, GetFEM's mean contact pressure (semi-smooth Newton on the same discrete P1
 problem) equals ring-lame's (condensed PSOR, active-set polish) within 1e-9 relative, ours read to
@@ -18,15 +18,15 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 from checklib import ROOT, TEST_RESULTS, check, finish, record, run_scene  # noqa: E402
 
-sys.path.insert(0, os.path.join(ROOT, "tools"))
-from getfem_lame import ours_pressure  # noqa: E402
+sys.path.insert(0, os.path.join(ROOT, "tools", "bench"))
+from ring_lame import ours_pressure  # noqa: E402
 
 LEVELS = ["l1", "l2"]
 
 
 def getfem(name, *options):
     path = os.path.join(TEST_RESULTS, f"getfem-lame-{name}.json")
-    subprocess.run([sys.executable, os.path.join(ROOT, "tools", "getfem_lame.py"), "--levels", " ".join(LEVELS),
+    subprocess.run([sys.executable, os.path.join(ROOT, "tools", "bench", "oracles", "getfem_lame.py"), "--levels", " ".join(LEVELS),
                     "--json", path, *options], cwd=ROOT, check=True)
     with open(path) as f:
         return {lv["name"]: lv for lv in json.load(f)["levels"]}

@@ -35,7 +35,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools", "bench", "oracles"))
 
 from checklib import KELVIN_AT_0C, REDUCED, ROOT, SLEEVE_SCENES, TEST_RESULTS, check, finish, record, run_scene, sleeve_outputs, sleeve_geometry  # noqa: E402
 from lame import lame_pressure  # noqa: E402

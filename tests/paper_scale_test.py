@@ -6,7 +6,7 @@ statements that the fit found them to agree with (section 4; docs/paper-scale.md
   - S1-S3, sleeve-circular (Fig. 12): zero force before contact, then linear in T while the ring
     is martensite, jumps while it reverts, constant once austenite (checklib.four_phases); the
     final pressure uniform and equal to Lame's shrink fit of the 0.5 mm interference (plane
-    strain, the closed form of tools/lame.py) within 0.2 %: of order 0.1 GPa, the paper's axis;
+    strain, the closed form of tools/bench/oracles/lame.py) within 0.2 %: of order 0.1 GPa, the paper's axis;
   - S4b, sleeve-circular-gvar (Fig. 18-19): zero force before contact, a long contact stage while
     martensite (not linear in T here: R^2 0.96, recorded), constant once austenite, the same final
     level (0.1 %), austenite for good earlier than with constant g;
@@ -28,7 +28,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools", "bench", "oracles"))
 
 from checklib import (KELVIN_AT_0C, check, finish, four_phases, r_squared, record, run_scene,  # noqa: E402
                       sleeve_geometry, sleeve_outputs)

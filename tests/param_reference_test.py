@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """-help on every script, and docs/parameter-reference.md generated from it
-(tools/param_reference.py, edp/lib/errors.idp).
+(tools/docs/param_reference.py, edp/lib/errors.idp).
 
   * the reference regenerated from the scripts' `-help tsv` equals docs/parameter-reference.md
     byte for byte (else: make docs);
@@ -27,7 +27,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools", "docs"))
 
 from checklib import ROOT, TEST_RESULTS, check, finish, record  # noqa: E402
 import param_reference  # noqa: E402

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""The sleeve scenes' points.csv in SI units and the figures drawn from it (tools/plot_sleeve.py,
-tools/plot_sleeve-radial.py; docs/outputs.md).
+"""The sleeve scenes' points.csv in SI units and the figures drawn from it (tools/plot/plot_sleeve.py,
+tools/plot/plot_sleeve-radial.py; docs/outputs.md).
 
 Runs sleeve-circular on its default mesh (meshes/sleeve-aniso.msh), 300 steps, a VTU frame every
 10 steps, and asserts:
@@ -11,7 +11,7 @@ Runs sleeve-circular on its default mesh (meshes/sleeve-aniso.msh), 300 steps, a
   - in every VTU frame (a different writer), each point's temperature (K) equals the VTU's
     nodal temperature at that node, and its gap (m) equals u.n + gap recomputed from the VTU's
     displacement and the pipe of summary.json (a centred circle: n radial);
-  - tools/plot_sleeve.py exits 0 and writes force-temperature.png, displacement.png,
+  - tools/plot/plot_sleeve.py exits 0 and writes force-temperature.png, displacement.png,
     iterations.png and fields-<instant>.png for the three instants (PNG files written by this
     run); its legend groups the three points as coinciding, with the largest difference it
     prints equal to the one measured here from points.csv (per step, each of T and pressure as a
@@ -19,7 +19,7 @@ Runs sleeve-circular on its default mesh (meshes/sleeve-aniso.msh), 300 steps, a
   - on a copy where one point's pressure is raised by 5 % after the first contact (synthetic:
     those curves do not coincide) the tool still exits 0 and no legend entry says "coincide";
     with only that point raised, the other two are still grouped;
-  - tools/plot_sleeve-radial.py exits 0 and writes its three PNGs on a sleeve-radial run
+  - tools/plot/plot_sleeve-radial.py exits 0 and writes its three PNGs on a sleeve-radial run
     (nr 20, 300 steps).
 Writes results/checks/plots.json.
 """
@@ -60,7 +60,7 @@ def read_vtu(path):
 
 def plot(tool, out, *extra):
     """Runs tools/<tool> on out; returns (exit code, stdout + stderr)."""
-    done = subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "tools", tool), out, *extra],
+    done = subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "tools", "plot", tool), out, *extra],
                           cwd=ROOT, capture_output=True, text=True)
     return done.returncode, done.stdout + done.stderr
 

@@ -33,8 +33,8 @@
       or damaged, a time fields.pvd does not list, a column without a known unit (docs/errors.md,
       "The Python package"); a sweep with a run that fails (g = -1) names it, its other run
       published and returned with the error;
-  (g) the command-line modules are the package's: tools/sma_driver, results_io and children
-      re-export the same objects; docs/python-api.md is what tools/python_api.py generates, and
+  (g) the command-line modules are the package's: tools/sma_driver.py, results_io.py and children.py
+      re-export the same objects; docs/python-api.md is what tools/docs/python_api.py generates, and
       every public function, class and method of the package has a docstring.
 Writes results/checks/python_package.json.
 """
@@ -347,10 +347,10 @@ def main():
         errors = error_checks(tmp, r, f)
     same = (sma_driver.run is sma.run and sma_driver.SceneError is sma.SceneError
             and tools_results_io.ResultsError is sma.results_io.ResultsError and tools_children.run is sma.children.run)
-    api = subprocess.run([PYTHON, os.path.join(ROOT, "tools", "python_api.py"), "--check"], cwd=ROOT,
+    api = subprocess.run([PYTHON, os.path.join(ROOT, "tools", "docs", "python_api.py"), "--check"], cwd=ROOT,
                          capture_output=True, text=True, timeout=60)
     check(same and api.returncode == 0,
-          f"(g) tools/sma_driver, results_io, children are the package's modules ({same}); docs/python-api.md is "
+          f"(g) tools/sma_driver.py, results_io.py, children.py are the package's modules ({same}); docs/python-api.md is "
           f"current and every public name has a docstring ({api.stderr.strip() or 'yes'}; else `make docs`)")
     record("python_package", {"test": "python_package", "sweep_rows": len(table),
                               "final_pressures_Pa": list(table["final_pressure_mean_Pa"]),

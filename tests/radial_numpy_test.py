@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""sleeve-radial against an independent implementation of its scheme: tools/radial_numpy.py
+"""sleeve-radial against an independent implementation of its scheme: tools/bench/oracles/radial_numpy.py
 (the same equations written again in vectorised numpy, tridiagonal LDL' factorisations, no shared
 code with the scripts or the plugin), at nr 20, 200 steps.
 
@@ -10,7 +10,7 @@ tolerances:
   - each DC loop stops once the relative change of u is <= dctol, so each run's displacement, and
     with it the contact pressure (a linear function of the inner displacement, of the size of the
     interference), is within about dctol of the loop's limit: the two pressure curves differ by at
-    most 2 dctol of the largest pressure (max over the union time grid, tools/curve_error.py linf);
+    most 2 dctol of the largest pressure (max over the union time grid, tools/bench/oracles/curve_error.py linf);
   - each fixed point stops once the relative change of T is <= fptol: the temperatures differ by at
     most 2 fptol T, plus the 12 significant digits the scene prints (half a unit of the 12th digit:
     5e-10 K at 200-300 K), as a mean over time (curve_error T_inner_l1);
@@ -34,7 +34,7 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-sys.path.insert(0, os.path.join(os.path.dirname(HERE), "tools"))
+sys.path.insert(0, os.path.join(os.path.dirname(HERE), "tools", "bench", "oracles"))
 
 from checklib import ROOT, TEST_RESULTS, check, finish, record, run_scene  # noqa: E402
 from curve_error import curve_error  # noqa: E402
@@ -46,7 +46,7 @@ PRINT_RELATIVE = 1e-10   # the final pressure's printed digits (12) and round-of
 
 def numpy_run(tag, *args):
     out = os.path.join(TEST_RESULTS, "radial-numpy-" + tag)
-    subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "tools", "radial_numpy.py"), "-out", out, *args],
+    subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "tools", "bench", "oracles", "radial_numpy.py"), "-out", out, *args],
                    cwd=ROOT, check=True)
     return out
 

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The accuracy reference of tools/reference_curve.py: its extrapolation on curves whose limit is
+"""The accuracy reference of tools/bench/reference_curve.py: its extrapolation on curves whose limit is
 known, its assumption tests failing where their assumption does not hold, then the real study.
 
   - curves p* + C(t) h^k (k = 1.3, a C with kinks): the extrapolant is p* to round-off, the order
@@ -24,7 +24,7 @@ import numpy as np
 
 from checklib import ROOT, check, finish, record
 
-sys.path.insert(0, os.path.join(ROOT, "tools"))
+sys.path.insert(0, os.path.join(ROOT, "tools", "bench"))
 import reference_curve as rc  # noqa: E402
 
 grid = np.linspace(0.0, 16.0, 3201)
@@ -66,9 +66,9 @@ check(not moving["tests"]["A2_ok"], f"an error shape moving with h: A2 fails (mi
       f"against the finest error {moving['tests']['A3_finest_level_error']:.2e})")
 
 out = os.path.join(ROOT, "results", "reference-test")
-proc = subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "tools", "reference_curve.py"), "--out", out,
+proc = subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "tools", "bench", "reference_curve.py"), "--out", out,
                        "--doc", os.path.join(out, "reference.md")], cwd=ROOT, capture_output=True, text=True)
-check(proc.returncode == 0, "tools/reference_curve.py passes its assumption tests"
+check(proc.returncode == 0, "tools/bench/reference_curve.py passes its assumption tests"
       + ("" if proc.returncode == 0 else f" (exit {proc.returncode}: {proc.stderr.strip() or proc.stdout.strip()})"))
 summary = json.load(open(os.path.join(out, "summary.json")))
 fr = summary["fraction_levels"]

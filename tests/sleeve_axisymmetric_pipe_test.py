@@ -5,7 +5,7 @@ axisymmetric body, its compliance in the condensed contact operator), at the pap
 1. Far from the ends, the compound cylinders: at the end the ring is all austenite and elastic, and
    with no friction each body of a long joint is an open-ended cylinder (its own constant e_zz, zero
    axial force: sigma_zz = 0, the in-plane stresses plane stress's), so the mid-length pressure
-   must be tools/lame.py compound_pressure(..., plane="stress") (written apart from the scene's
+   must be tools/bench/oracles/lame.py compound_pressure(..., plane="stress") (written apart from the scene's
    LameCompoundPressure). Steel solid shaft (200 GPa, 0.28), L = 0.4 m: order >= 1.8 over nr 2, 4,
    error < 5e-4 at nr 4; a hollow steel pipe (-pipeRi 0.045) at nr 4 within 6e-4; the closed form
    more than 5 % off plane strain's.
@@ -79,7 +79,7 @@ for nr in (2, 4):
     s = run["summary"]
     closed = closed_form(s, 0.0)
     check(abs(s["open_cylinder_pressure"] - closed) <= 1e-9 * closed,
-          f"scene's closed form {s['open_cylinder_pressure']:.9g} Pa = tools/lame.py's {closed:.9g} Pa")
+          f"scene's closed form {s['open_cylinder_pressure']:.9g} Pa = tools/bench/oracles/lame.py's {closed:.9g} Pa")
     mid[nr] = abs(s["final_pressure_mid"] - closed) / closed
     data[f"mid_error_nr{nr}"] = mid[nr]
 order = math.log2(mid[2] / mid[4])

@@ -2,7 +2,7 @@
 """Convergence of sleeve-circular's force curve in 2D, and no chatter over the exchange range
 (issue 13; docs/benchmarks.md has the full study, written by make bench).
 
-Metric: tools/curve_error.py l1_transient, the L1-in-time relative error of the mean contact
+Metric: tools/bench/oracles/curve_error.py l1_transient, the L1-in-time relative error of the mean contact
 pressure over the transient (until the reference is austenite for good). Reference: the
 independent 1D model of the same problem (sleeve-radial, nr 160, 1200 steps over 30 s: itself
 0.16 % from its nr 640 limit, docs/benchmarks.md).
@@ -26,7 +26,7 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-sys.path.insert(0, os.path.join(os.path.dirname(HERE), "tools"))
+sys.path.insert(0, os.path.join(os.path.dirname(HERE), "tools", "bench", "oracles"))
 
 from checklib import check, finish, record, run_scene  # noqa: E402
 from curve_error import curve_error  # noqa: E402

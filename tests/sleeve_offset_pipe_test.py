@@ -5,7 +5,7 @@ coarse half ring, 600 steps, -scale reduced.
 
 1. Symmetry reduction: the half ring on a centred solid steel shaft (2.1e11) gives the quarter
    ring's final pressure on the same shaft (within 1e-6), and the compound cylinders' closed form
-   (tools/lame.py compound_pressure, plane strain) to the coarse mesh's error (< 1e-3).
+   (tools/bench/oracles/lame.py compound_pressure, plane strain) to the coarse mesh's error (< 1e-3).
 2. The offset ring (5.5 um) on the steel shaft recentres (point A moves by the offset within 5 %)
    and ends at the centred level (within 1e-4), also on a hollow steel pipe (-pipeRi 0.045) against
    its closed form (< 1.5e-3).

@@ -6,7 +6,7 @@ meshes/sleeve-geometry.txt is the one place of the ring's and pipe's dimensions:
 meshes the ring from it, the radial model and the -pipeA default read it. The 2D model takes its
 ring from the mesh unless -Ri / -interference / -thickness ask for another; it then stretches the
 mesh radially. Asserts, with a 60 um interference and a 12 mm thickness (both unlike the meshes'):
-  - the 2D (coarse mesh) and radial final pressures against Lame's shrink fit (tools/lame.py),
+  - the 2D (coarse mesh) and radial final pressures against Lame's shrink fit (tools/bench/oracles/lame.py),
     the final state being all austenite and elastic: within 0.5 % (2D, 6 layers) and 0.05 %
     (radial, nr 40);
   - the 2D summary's ring inner radius is -pipeA minus the interference (to 1e-12 m);
@@ -26,7 +26,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools", "bench", "oracles"))
 
 from checklib import ROOT, check, finish, record, rows, run_scene, sleeve_geometry, sleeve_outputs  # noqa: E402
 from lame import lame_pressure  # noqa: E402

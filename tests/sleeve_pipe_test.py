@@ -2,7 +2,7 @@
 """Verification of the elastic pipe of sleeve-radial (-pipeE > 0: a second body in contact).
 
 1. Compound cylinders: at the end the ring is all austenite and elastic, so the contact pressure
-   must be the closed-form shrink fit of an elastic ring on an elastic pipe (tools/lame.py
+   must be the closed-form shrink fit of an elastic ring on an elastic pipe (tools/bench/oracles/lame.py
    compound_pressure, written apart from the scene's LameCompoundPressure), plane strain and plane
    stress, solid shaft and hollow pipe: the relative error must fall at order 2 in nr (both bodies
    P1, the pipe's elements of the ring's size) over nr = 2 ... 32; the pipe's inner-surface
@@ -38,7 +38,7 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-sys.path.insert(0, os.path.join(os.path.dirname(HERE), "tools"))
+sys.path.insert(0, os.path.join(os.path.dirname(HERE), "tools", "bench", "oracles"))
 
 from checklib import ROOT, TEST_RESULTS, check, finish, record, rows, run_scene  # noqa: E402
 from curve_error import curve_error  # noqa: E402
@@ -248,7 +248,7 @@ def main():
             check(errors[32] < 2e-5 and all(1.9 <= o <= 2.1 for o in orders) and scene_formula < 1e-10,
                   f"{case}: final pressure at nr 32 within {errors[32]:.1e} < 2e-5 of the compound cylinders' "
                   f"{exact / 1e6:.6f} MPa, order {min(orders):.3f} to {max(orders):.3f} in nr; the scene's own "
-                  f"lame_pressure agrees with tools/lame.py to {scene_formula:.1e}")
+                  f"lame_pressure agrees with tools/bench/oracles/lame.py to {scene_formula:.1e}")
             entry = {"exact_Pa": exact, "errors": {str(n): e for n, e in errors.items()}, "orders": orders}
             if pipe_inner > 0:
                 s = runs[32]["summary"]

@@ -5,7 +5,7 @@
    the contact pressure must be the closed-form shrink-fit pressure of a thick ring (plane strain,
    interference = pipe radius - inner radius) on a rigid shaft, to discretisation accuracy: the
    relative error must fall at order 2 in nr (P1 nodal reaction), over nr = 2 ... 32.
-2. Convergence of the transient force curve (tools/curve_error.py l1_transient) with the default
+2. Convergence of the transient force curve (tools/bench/oracles/curve_error.py l1_transient) with the default
    fraction model: nr and dt refined together (20/150 ... 320/2400 steps over 30 s); the
    successive differences must decrease at an observed order >= 0.9, every level without a
    reversal step or a pressure zigzag, and the scene's defaults within 0.3 % of the finest level.
@@ -27,7 +27,7 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-sys.path.insert(0, os.path.join(os.path.dirname(HERE), "tools"))
+sys.path.insert(0, os.path.join(os.path.dirname(HERE), "tools", "bench", "oracles"))
 
 from checklib import ROOT, check, finish, record, rows, run_scene  # noqa: E402
 from curve_error import curve_error  # noqa: E402

@@ -10,7 +10,7 @@ checkout's whatever the user's install points at). Checked from the executed not
       written under docs/;
   (c) the curve's last mean pressure (history.csv, read by the notebook) is the run's summary.json
       final_pressure_mean, read here;
-  (d) the Lame pressure it prints is the rigid-pipe limit of tools/lame.py's compound_pressure
+  (d) the Lame pressure it prints is the rigid-pipe limit of tools/bench/oracles/lame.py's compound_pressure
       (the textbook thick cylinders, another formula than the notebook's lame_pressure), computed
       here from the run's parameters, and the run's final pressure is within 2 dc_tol of it;
   (e) the sweep's printed table has one row per point of the printed grid (3 interferences x 2 g),
@@ -37,7 +37,7 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from checklib import ROOT, TEST_RESULTS, check, finish, record, rows  # noqa: E402
-from lame import compound_pressure  # noqa: E402  (checklib puts tools/ on the path)
+from lame import compound_pressure  # noqa: E402  (checklib puts tools/bench/oracles on the path)
 import nbformat  # noqa: E402
 
 NOTEBOOK = os.path.join(ROOT, "docs", "tutorial", "sleeve-lab.ipynb")

@@ -13,7 +13,7 @@ superellipse's default on its own mesh), two runs at a time. Runs into build/tes
     curve (1e-12) with the normal along its gradient (1e-12); by default the corners touch first
     (the diagonal point before the axes' points) and every node touches at the end;
   * sleeve-plane-stress: the final (all-austenite) pressure equals Lame's plane-stress shrink fit
-    (tools/lame.py, the ring's radii from meshes/sleeve-geometry.txt) within 1e-3 (plane strain's
+    (tools/bench/oracles/lame.py, the ring's radii from meshes/sleeve-geometry.txt) within 1e-3 (plane strain's
     value is 7 % higher);
   * sleeve-asymmetric-law: -ratio 1 reproduces sleeve-circular -phasemodel onoff byte for byte
     (history.csv, points.csv, contact-final.csv) and ran the asymmetric step; -ratio 0.75 too,
@@ -30,7 +30,7 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools", "bench", "oracles"))
 
 from checklib import REDUCED, ROOT, TEST_RESULTS, check, finish, record, rows, sleeve_outputs  # noqa: E402
 from lame import lame_pressure  # noqa: E402

@@ -7,7 +7,7 @@
 set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
 
-# python3-getfem is used only by make bench and tests/getfem_lame_test.py (tools/getfem_lame.py:
+# python3-getfem is used only by make bench and tests/getfem_lame_test.py (tools/bench/oracles/getfem_lame.py:
 # ring-lame solved by GetFEM, the independent solver our pressure and speed are compared with):
 # 16.7 MB with libgetfem5 and libqhull8.0, plus python3-scipy (62 MB) where it is not installed yet.
 # python3-pandas, python3-pip, python3-setuptools and python3-wheel: the sma package (python/sma,

@@ -1,6 +1,6 @@
 """The format every script prints with `-help tsv` (edp/lib/errors.idp): a header line, then one
 tab-separated row per option (name, type, default, meaning). The one parser of it: the driver's
-option checks and tools/param_reference.py (docs/parameter-reference.md) both read it here."""
+option checks and tools/docs/param_reference.py (docs/parameter-reference.md) both read it here."""
 import re
 
 HEADER = "option\ttype\tdefault\tmeaning"

@@ -1,4 +1,4 @@
-// The radial sleeve (edp/problems/sleeve/radial.idp, tools/radial_numpy.py) built in C++ for the
+// The radial sleeve (edp/problems/sleeve/radial.idp, tools/bench/oracles/radial_numpy.py) built in C++ for the
 // step solver's unit tests: P1 elements in r, one phase point per element, lumped heat capacity,
 // Robin exchange on both surfaces, one contact unknown (the inner node against the pipe).
 #pragma once

@@ -186,7 +186,7 @@ TEST(StepNewton, PaperScaleConvergesInFewIterations) {
   ASSERT_GT(transforming, 10);
   EXPECT_LE((double)iterations / transforming, 5.0);
   EXPECT_LE(worst, 15);
-  // Lame's shrink-fit pressure of 0.5 mm at the end (all austenite): 156.35 MPa (tools/lame.py).
+  // Lame's shrink-fit pressure of 0.5 mm at the end (all austenite): 156.35 MPa (tools/bench/oracles/lame.py).
   EXPECT_NEAR(records.back().pressure, 156.3545e6, 0.0001e6 * 156.35);
 }
 

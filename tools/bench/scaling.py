@@ -23,7 +23,7 @@ Sizes above NODE_LIMIT are listed as skipped. (Before the contact solver dropped
 G = K^-1 Hn', N x m doubles, 1.1 GB at nr 140, the limit was 40 000 nodes.)
 
 bench.py calls scaling() from main() and section() / goals() from write_doc(); alone:
-  tools/bench_scaling.py [--quick]    (writes results/bench-scaling/summary.json and prints the table)
+  tools/bench/scaling.py [--quick]    (writes results/bench-scaling/summary.json and prints the table)
 """
 import csv
 import json
@@ -35,7 +35,7 @@ import subprocess
 import sys
 import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 SCENE = "edp/scenes/sleeve-circular.edp"
 
 # (layers, mesh): the structured quarter rings, 5 nr arc segments, (nr + 1) (5 nr + 1) nodes.
@@ -302,7 +302,7 @@ def section(rec, plt, save):
     w(f"sleeve-circular on the structured quarter rings (nr layers x 5 nr arc segments), {rec['steps']} steps of "
       f"{rec['dt_seconds']:g} s: a run stopped with a checkpoint after step {rec['checkpoint']} (the transient), "
       f"then resumed and timed over steps {rec['checkpoint'] + 1}-{rec['steps']}, the transient-free part "
-      "(tools/bench_scaling.py; docs/parameters.md#scaling-benchmark-toolsbench_scalingpy). ms/step and ms per DC "
+      "(tools/bench/scaling.py; docs/parameters.md#scaling-benchmark-toolsbenchscalingpy). ms/step and ms per DC "
       f"iteration: the resumed loop (summary.json wall_seconds, median of {done[0].get('repeats', 1) if done else 1} "
       "resumed runs from the same checkpoint) over its steps and its DC iterations; memory: the "
       "resumed process's max RSS (/usr/bin/time -f %M); setup: its wall time minus its loop. The transient's "

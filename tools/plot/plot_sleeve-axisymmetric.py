@@ -9,12 +9,14 @@ from results/sleeve-axisymmetric/:
                          instants (end of dilatation, during contact, end; and after the pull-out)
   pullout.png            (-pullout > 0) the axial force the pipe transmits (kN, towards the held face) and
                          mu times the total normal force against the pipe's displacement (mm)
-Usage: tools/plot_sleeve-axisymmetric.py results/sleeve-axisymmetric
+Usage: tools/plot/plot_sleeve-axisymmetric.py results/sleeve-axisymmetric
 """
-import results_io
-import glob
 import os
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tools/: results_io, units
+import results_io  # noqa: E402
+import glob
 
 import matplotlib
 
@@ -22,7 +24,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_sleeve import fields_time, read_csv, save  # noqa: E402
+from sleeve_curves import fields_time, read_csv  # noqa: E402
+from sma.plotting import save  # noqa: E402
 from units import celsius  # noqa: E402
 
 

@@ -2,13 +2,13 @@
 """The paper's claims about its figures 11-36, one row each, against the figure scenes at their
 defaults (the default phase model, results/<scene>/ from make figures) and against the paper's
 on/off scheme (results/claims/onoff-<scene>/), with a verdict and, for each disagreement, the run
-that tests an explanation (results/claims/<name>/) or "open". tools/figures.py puts the table at
+that tests an explanation (results/claims/<name>/) or "open". tools/docs/figures.py puts the table at
 the head of docs/figures.md.
 
-Usage: tools/claims.py --run   the on/off and explanation runs (make figures; about 3 min), one at
+Usage: tools/docs/claims.py --run   the on/off and explanation runs (make figures; about 3 min), one at
                                a time, each failure named with its log
-       (tools/figures.py imports table())
-The measures are those of tools/paper_scale_fit.py (docs/paper-scale.md), read from these runs.
+       (tools/docs/figures.py imports table())
+The measures are those of tools/docs/paper_scale_metrics.py (docs/paper-scale.md), read from these runs.
 """
 import json
 import math
@@ -17,11 +17,12 @@ import shutil
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tools/: results_io
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import results_io  # noqa: E402
-from paper_scale_fit import curve, ellipse_metrics, gvar_crossing, offset_metrics, reversion_start, summ, tmin_position  # noqa: E402
+from paper_scale_metrics import curve, ellipse_metrics, gvar_crossing, offset_metrics, reversion_start, summ, tmin_position  # noqa: E402
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 RESULTS = os.path.join(ROOT, "results")
 CLAIMS = os.path.join(RESULTS, "claims")
 QUARTER = ["-phasemodel", "onoff", "-mesh", "meshes/sleeve-quarter.msh"]

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Writes docs/python-api.md: the public API of the sma package (python/sma), from its docstrings.
 
-Usage: tools/python_api.py [--out FILE] [--check]
+Usage: tools/docs/python_api.py [--out FILE] [--check]
   --out FILE  write there instead of docs/python-api.md ('-': standard output)
   --check     write nothing; exit 1 naming what differs when docs/python-api.md is not current,
               or naming every public function, class or method without a docstring
@@ -19,7 +19,7 @@ import os
 import pkgutil
 import sys
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "python"))  # this checkout's package, not an installed one
 import sma  # noqa: E402
 
@@ -66,7 +66,7 @@ def undocumented():
 
 def markdown():
     lines = ["# The sma Python package (python/sma)", "",
-             "Generated from the package's docstrings by `tools/python_api.py` (`make docs`); do not edit.",
+             "Generated from the package's docstrings by `tools/docs/python_api.py` (`make docs`); do not edit.",
              "Install: `make python` (docs/parameters.md, \"The Python package\"); files, columns and units:",
              "docs/outputs.md.", "", doc(sma), "", "## Contents", ""]
     lines += [f"- [`{n}`](#{n.lower()})" for n in sma.__all__]

@@ -3,12 +3,14 @@
 
 phase-<mesh>.png: phase zones, austenite grey, martensite 1 black, martensite 2 white (as the paper);
 dc-convergence.png: relative displacement change per DC iteration, log scale, all meshes.
-Usage: tools/plot_beam.py [results/beam]
+Usage: tools/plot/plot_beam.py [results/beam]
 """
-import results_io
-import csv
 import os
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tools/: results_io, units
+import results_io  # noqa: E402
+import csv
 
 import matplotlib
 
@@ -16,8 +18,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_sleeve import save  # noqa: E402
+from sma.plotting import save  # noqa: E402
 
 PHASE_COLOURS = {0: "0.6", 1: "black", 2: "white"}
 

@@ -4,7 +4,7 @@ edp/problems/sleeve/sleeve-2d.idp or edp/scenes/sleeve-radial.edp: columns t, pr
 contact_nodes, fraction_austenite).
 
     curve_error(history_csv, reference_csv) -> dict
-    tools/curve_error.py history.csv reference.csv      prints that dict as JSON
+    tools/bench/oracles/curve_error.py history.csv reference.csv      prints that dict as JSON
 
 Both pressure curves p(t), p_ref(t) are taken as piecewise linear in t through their steps, with
 p = 0 at t = 0 (the initial state touches nothing), and compared over [0, tEnd], tEnd the end of
@@ -138,7 +138,7 @@ def curve_error(history_csv, reference_csv):
 
 def main():
     if len(sys.argv) != 3:
-        print("usage: tools/curve_error.py history.csv reference.csv", file=sys.stderr)
+        print("usage: tools/bench/oracles/curve_error.py history.csv reference.csv", file=sys.stderr)
         sys.exit(2)
     try:
         result = curve_error(sys.argv[1], sys.argv[2])

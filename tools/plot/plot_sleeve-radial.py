@@ -10,12 +10,14 @@ results/sleeve-radial/:
   fields.png             radial profiles of sigma_rr, sigma_tt (MPa), T (C) and the phase (the
                          signed martensite fraction: M1 > 0, A, M2 < 0) at the three instants
                          (end of dilatation, during contact, end)
-Usage: tools/plot_sleeve-radial.py results/sleeve-radial [other/history.csv ...]
+Usage: tools/plot/plot_sleeve-radial.py results/sleeve-radial [other/history.csv ...]
 """
-import results_io
-import glob
 import os
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tools/: results_io, units
+import results_io  # noqa: E402
+import glob
 
 import matplotlib
 
@@ -23,13 +25,14 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_sleeve import fields_time, force_panels, read_csv, save, state_values  # noqa: E402
+from sleeve_curves import fields_time, force_panels, iterations_figure, read_csv, state_values  # noqa: E402
+from sma.plotting import save  # noqa: E402
 from units import celsius  # noqa: E402
 
 
 def force_temperature(outdir, summary, others):
     """Left: pressure against the inner-surface temperature; right: against time, zoomed on the
-    transient; this run's four phases shaded (plot_sleeve.force_panels)."""
+    transient; this run's four phases shaded (sleeve_curves.force_panels)."""
     h = read_csv(os.path.join(outdir, "history.csv"))
     curves = {f"1D, nr {summary['nr']}, {summary['n_steps']} steps": (h["T_inner_mean"], h["pressure_mean"], h["t"])}
     for path in others:
@@ -51,19 +54,10 @@ def force_temperature(outdir, summary, others):
 
 
 def iterations(outdir, summary):
-    h = read_csv(os.path.join(outdir, "history.csv"))
-    fig, ax = plt.subplots(figsize=(7, 4))
     # DC iterations are summed over the fixed-point iterations of a step, so they lie above.
-    for key, label in (("dc_iterations", "DC (all passes of the step)"),
-                       ("fixed_point_iterations", "heat <-> phases")):
-        ax.plot(h["t"], h[key], lw=0.8, label=label)
-    ax.set_xscale("symlog", linthresh=1)  # the clamping happens in the first 16 s of 150
-    ax.set_xlabel("t (s)")
-    ax.set_ylabel("iterations in the step")
-    ax.set_title(f"{summary['scene']}: iterations per step")
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    save(fig, os.path.join(outdir, "iterations.png"), 120)
+    iterations_figure(outdir, summary, (("dc_iterations", "DC (all passes of the step)"),
+                                        ("fixed_point_iterations", "heat <-> phases")),
+                      1, "t (s)", log_counts=False)  # the clamping happens in the first 16 s of 150
 
 
 def fields(outdir, summary):

@@ -4,7 +4,7 @@ the Richardson extrapolation of the radial model's fraction curve to h, dt -> 0,
 assumptions stated and tested, and the paper's on/off scheme measured against it as an
 independent check (issue 30, item 4).
 
-    /usr/bin/python3 tools/reference_curve.py [--quick] [--out DIR] [--doc FILE]
+    /usr/bin/python3 tools/bench/reference_curve.py [--quick] [--out DIR] [--doc FILE]
 
 Writes DIR/reference.csv (t, the extrapolated mean contact pressure p*, its uncertainty band),
 DIR/summary.json (every level, every test below, the defaults' errors) and, unless --quick, the
@@ -17,7 +17,7 @@ transient ends near 16 s), levels l = 0..N with nr_l = nr_0 2^l elements and 7.5
 (dt and h halved together), the default fraction model and step solver. Each run's mean contact
 pressure p_l(t) is piecewise linear in t through its steps; the coarsest grid's times are nodes of
 every finer grid. Norms: |f| = int_0^tA |f| dt / int_0^tA |p*| dt over the transient [0, tA], tA
-the time from which the finest run is austenite for good (tools/curve_error.py's l1_transient),
+the time from which the finest run is austenite for good (tools/bench/oracles/curve_error.py's l1_transient),
 evaluated on the finest grid (the curves are linear between its nodes).
 
 The model of the error, and its tests (each must pass, else the tool fails):
@@ -53,9 +53,10 @@ import time
 
 import numpy as np
 
-import results_io
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tools/: results_io
+import results_io  # noqa: E402
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 TEND = 30.0
 STEPS_PER_ELEMENT = 7.5
 FRACTION_LEVELS = [40, 80, 160, 320, 640, 1280]
@@ -240,7 +241,7 @@ def main():
             defaults.append({"run": name, "wall_seconds": wall, "error": rel(on_grid(h, transient) - reference)})
 
     with open(os.path.join(out, "reference.csv"), "w") as f:
-        f.write("# Richardson extrapolation of sleeve-radial's mean contact pressure (tools/reference_curve.py)\n")
+        f.write("# Richardson extrapolation of sleeve-radial's mean contact pressure (tools/bench/reference_curve.py)\n")
         f.write("t,pressure_reference_Pa,pressure_finest_Pa,pressure_without_finest_Pa\n")
         for row in zip(transient, reference, curves[-1], previous):
             f.write(",".join(f"{v:.12g}" for v in row) + "\n")
@@ -266,12 +267,12 @@ def write_doc(path, s):
     lines = [
         "# An accuracy reference for the force curve",
         "",
-        "Written by `tools/reference_curve.py` (its docstring states the method); numbers from that run.",
+        "Written by `tools/bench/reference_curve.py` (its docstring states the method); numbers from that run.",
         "Every accuracy figure of docs/benchmarks.md is measured against the fraction model's own finest",
         "radial run. This page measures against something else: the Richardson extrapolation of the",
         "radial fraction curve to h, dt -> 0, whose assumptions are tested below, and checks it with the",
         "paper's on/off scheme, another discretisation of the same problem. Error: relative L1 in time",
-        f"of the mean contact pressure over the transient [0, {s['t_austenite']:.3f} s] (tools/curve_error.py's",
+        f"of the mean contact pressure over the transient [0, {s['t_austenite']:.3f} s] (tools/bench/oracles/curve_error.py's",
         f"`l1_transient`); levels: nr elements, {s['steps_per_element']:g} nr steps over {s['tend']:g} s.",
         "",
         "## The fraction model's levels and the extrapolation",

@@ -1,8 +1,8 @@
 """The sleeve's dimensions, read from meshes/sleeve-geometry.txt: the one place of them (the
-meshes, the radial scene, tools/radial_numpy.py and the tests all read it)."""
+meshes, the radial scene, tools/bench/oracles/radial_numpy.py and the tests all read it)."""
 import os
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
 
 
 def sleeve_geometry():

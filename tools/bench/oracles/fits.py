@@ -1,4 +1,4 @@
-"""Least-squares fits shared by the figures (tools/figures.py) and the tests (tests/checklib.py)."""
+"""Least-squares fits shared by the figures (tools/docs/figures.py) and the tests (tests/checklib.py)."""
 
 
 def r_squared(xs, ys):

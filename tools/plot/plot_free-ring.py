@@ -1,21 +1,22 @@
 #!/usr/bin/python3
 """Figure of the free-ring scene: temperatures and phase fractions against time.
 
-Usage: tools/plot_free-ring.py [results/free-ring] [other-run-dir label ...]
+Usage: tools/plot/plot_free-ring.py [results/free-ring] [other-run-dir label ...]
 Extra (directory, label) pairs overlay the mean temperature of other runs (e.g. -latent 0).
 """
-import results_io
-import csv
 import os
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tools/: results_io, units
+import results_io  # noqa: E402
+import csv
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_sleeve import save  # noqa: E402
+from sma.plotting import save  # noqa: E402
 from units import celsius  # noqa: E402
 
 

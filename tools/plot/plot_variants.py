@@ -5,12 +5,14 @@
   lobed-pressure.png      contact pressure and tangential density along the ring, circle and lobed pipe
   p2-convergence.png      beam tip deflection against degrees of freedom, P1 and P2
   deviatoric-phases.png   beam phase zones with the deviatoric transformation direction (medium mesh)
-Usage: tools/plot_variants.py [--only <variant>] [results/variants] [docs/variants]
+Usage: tools/plot/plot_variants.py [--only <variant>] [results/variants] [docs/variants]
   (--only: the one figure of that variant, e.g. into its results folder: make run SCENE=beam-p2)
 """
-import results_io
 import os
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tools/: results_io, units
+import results_io  # noqa: E402
 
 import matplotlib
 
@@ -18,17 +20,16 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tests"))
 from checklib import rows  # noqa: E402
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import plot_sleeve  # noqa: E402
+from sma.plotting import save as save_png  # noqa: E402
 
 PHASE_COLOURS = {0: "0.6", 1: "black", 2: "white"}  # the paper's Fig. 9: grey, black, white
 
 
 def save(fig, path):
-    plot_sleeve.save(fig, path, 120, tight=True)
+    save_png(fig, path, 120, tight=True)
     print("wrote", path)
 
 

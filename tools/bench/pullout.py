@@ -14,8 +14,8 @@ steel: 2-4-8); the reference is the Richardson extrapolation of the two finest d
 with the finer triple's p, and each level's error is against it. Time to 1 % (and 0.1 %): the
 least wall time (the process's, FreeFEM's start and the setup included) of a level within it.
 
-bench.py calls measure() from main() and section() from write_doc(); alone:
-  tools/bench_pullout.py [--quick]   (writes results/bench-pullout/summary.json and prints the section;
+bench.py calls measure() from main(), report.py section() from write_doc(); alone:
+  tools/bench/pullout.py [--quick]   (writes results/bench-pullout/summary.json and prints the section;
                                       --quick: rigid nr 2, 4, 8 only)
 """
 import json
@@ -25,7 +25,7 @@ import subprocess
 import sys
 import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 SCENE = "edp/scenes/sleeve-axisymmetric.edp"
 PULL = ["-scale", "paper", "-mu", "0.2", "-pullout", "1e-3", "-pullsteps", "25"]
 STEEL = ["-pipeE", "200e9", "-pipenu", "0.28"]
@@ -94,7 +94,7 @@ def section(rec, plt, save):
       "(`-mu 0.2 -pullout 1e-3 -pullsteps 25`), 1000 time steps at every level (only the mesh is refined), "
       "square cells; the pull-out force is the sliding plateau mu N. Reference: Richardson's extrapolation of "
       "the two finest doubling levels with their observed order; time: the whole process "
-      "(tools/bench_pullout.py).")
+      "(tools/bench/pullout.py).")
     w("")
     series = [(name, s) for name, s in rec.items() if s.get("reference")]
     if series:

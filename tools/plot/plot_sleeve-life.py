@@ -8,8 +8,8 @@ results/sleeve-life/:
                             (-minpressure) and the free ring's transformation temperatures
   life.png                  against time (s): the ambient and the inner-surface temperature (C),
                             the martensite fraction, and the pressure (MPa), stages shaded
-  fields.png                radial profiles at the three instants (tools/plot_sleeve-radial.py's)
-Usage: tools/plot_sleeve-life.py results/sleeve-life
+  fields.png                radial profiles at the three instants (tools/plot/plot_sleeve-radial.py's)
+Usage: tools/plot/plot_sleeve-life.py results/sleeve-life
 """
 import results_io
 import os
@@ -20,8 +20,10 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tools/: units
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_sleeve import read_csv, save  # noqa: E402
+from sleeve_curves import read_csv  # noqa: E402
+from sma.plotting import save  # noqa: E402
 from units import celsius  # noqa: E402
 
 STAGES = {1: ("1 cooling", "tab:blue"), 2: ("2 storage", "tab:cyan"), 3: ("3 installation", "tab:purple"),

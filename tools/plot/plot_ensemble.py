@@ -5,11 +5,13 @@
   histogram.png  left: the peak and the final clamping force (mean contact pressure, MPa) over the
                  seeds; right: the largest pressure peak of a single inner-surface node over its
                  final value; the 5/50/95 % quantiles of summary.json as lines
-Usage: tools/plot_ensemble.py results/sleeve-random-ensemble
+Usage: tools/plot/plot_ensemble.py results/sleeve-random-ensemble
 """
-import results_io
 import os
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tools/: results_io, units
+import results_io  # noqa: E402
 
 import matplotlib
 
@@ -18,7 +20,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.ticker import MaxNLocator  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_sleeve import read_csv, save  # noqa: E402
+from sleeve_curves import read_csv  # noqa: E402
+from sma.plotting import save  # noqa: E402
 from units import celsius  # noqa: E402
 
 

@@ -1,0 +1,86 @@
+#!/usr/bin/python3
+"""tools/ split by audience (docs: README.md, "tools/"): what the split promises, checked on the files.
+
+  (a) the oracles (tools/bench/oracles/*.py: Lame's closed forms, the curve metric, sleeve-radial's
+      scheme in numpy, ring-lame by GetFEM) import only the standard library, numpy, scipy, getfem
+      and each other: nothing of the sma package (python/sma) or of the tools that reach it, so
+      that what they check is computed twice, independently;
+  (b) every path tools/... written in a tracked file (the Makefile, the tests, the docs, README,
+      the scripts' comments, the tools themselves) names a file or folder that exists: a move
+      that left a caller behind fails here, naming the file and line;
+  (c) every Python file of tools/ is under 400 lines (one job a file).
+Writes results/checks/tools_layout.json.
+"""
+import ast
+import os
+import re
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checklib import ROOT, check, finish, record  # noqa: E402
+
+ORACLES = os.path.join(ROOT, "tools", "bench", "oracles")
+THIRD_PARTY = {"numpy", "scipy", "getfem"}  # Debian's packages the oracles may use
+# A path as written in prose or code; placeholders (<scene>, $(SCENE), *) are not paths.
+TOOLS_PATH = re.compile(r"(?<![\w/.-])tools/[\w./<>$()*-]*")
+MAX_LINES = 400
+
+
+def imports(path):
+    """[(line, top-level module)] of every import statement of the file, nested ones included."""
+    found = []
+    for node in ast.walk(ast.parse(open(path).read(), path)):
+        if isinstance(node, ast.Import):
+            found += [(node.lineno, alias.name.split(".")[0]) for alias in node.names]
+        elif isinstance(node, ast.ImportFrom) and node.level == 0:
+            found.append((node.lineno, node.module.split(".")[0]))
+    return found
+
+
+# (a)
+siblings = {name[:-3] for name in os.listdir(ORACLES) if name.endswith(".py")}
+allowed = set(sys.stdlib_module_names) | THIRD_PARTY | siblings
+outside = [f"tools/bench/oracles/{name}.py:{line} imports {module}" for name in sorted(siblings)
+           for line, module in imports(os.path.join(ORACLES, name + ".py")) if module not in allowed]
+check(len(siblings) >= 6 and not outside,
+      f"(a) the {len(siblings)} oracles ({', '.join(sorted(siblings))}) import only the standard library, "
+      f"{', '.join(sorted(THIRD_PARTY))} and each other" + (f": {'; '.join(outside)}" if outside else ""))
+
+# (b)
+tracked = subprocess.run(["git", "ls-files", "-z"], cwd=ROOT, capture_output=True, text=True,
+                         check=True).stdout.split("\0")
+stale, named = [], 0
+for rel in filter(None, tracked):
+    path = os.path.join(ROOT, rel)
+    if not os.path.isfile(path) or rel.endswith((".msh", ".png", ".csv")):
+        continue
+    try:
+        text = open(path, encoding="utf-8").read()
+    except UnicodeDecodeError:
+        continue
+    for number, line in enumerate(text.splitlines(), 1):
+        for match in TOOLS_PATH.finditer(line):
+            written = match.group(0).rstrip(".)")
+            if any(c in written for c in "<>$*"):
+                continue
+            named += 1
+            if not os.path.exists(os.path.join(ROOT, written)):
+                stale.append(f"{rel}:{number}: {written}")
+check(named > 100 and not stale, f"(b) {named} tools/ paths written in the tracked files, each names an "
+      f"existing file or folder" + (f"; stale: {'; '.join(stale[:20])}" if stale else ""))
+
+# (c)
+lengths = {}
+for folder, _, files in os.walk(os.path.join(ROOT, "tools")):
+    for name in files:
+        if name.endswith(".py"):
+            rel = os.path.relpath(os.path.join(folder, name), ROOT)
+            lengths[rel] = sum(1 for _ in open(os.path.join(ROOT, rel)))
+longest = max(lengths, key=lengths.get)
+check(lengths[longest] < MAX_LINES, f"(c) the {len(lengths)} Python files of tools/ are under {MAX_LINES} lines "
+      f"(longest: {longest}, {lengths[longest]})")
+
+record("tools_layout", {"oracles": sorted(siblings), "tools_paths_named": named, "stale_paths": stale,
+                        "python_files": len(lengths), "longest": [longest, lengths[longest]]})
+finish()

@@ -1,0 +1,101 @@
+#!/usr/bin/python3
+"""make bench: speed against error, everything measured in this one run.
+
+Runs, from the repository root (tools/ff), and writes results/bench/ (every run's outputs,
+summary.json with the headline figures) and docs/benchmarks.md with its PNGs in docs/benchmarks/
+(report.py); one module of this folder a section:
+  1. the radial reference (edp/scenes/sleeve-radial.edp, nr 640, 4800 steps over the first 30 s:
+     the finest 1D run affordable, itself about 0.03 % from its limit)           study.py
+  1b. the refinement study of the force curve (issue 13): sleeve-radial and sleeve-circular with
+     dt and h refined together, against the reference and against each other, observed orders,
+     the paper's on/off model beside the fraction model, the defaults, and the exchange
+     coefficient from 125 to 4000 W/(m^2 K) (reversal steps, pressure zigzags)     study.py
+  2. the work-precision grid: sleeve-circular on 5 structured meshes x 4 step counts; error of the
+     force-temperature curve against the radial reference (oracles/curve_error.py, relative L1 in
+     time) and of the final pressure against Lame's closed form, versus wall time  work_precision.py
+  3. the default scene (1500 steps, default mesh) three times: wall time and iteration counts
+                                                                                   default_run.py
+  4. the kernels (edp/bench/kernels.edp): plugin against pure-.edp phase projection and PSOR
+     sweeps, and one DC iteration against one back-solve                           kernels.py
+  5. PSOR modes full / condensed (plain, with active-set polish) for omega in 1.0 .. 1.95, and
+     the polish interval                                                           psor.py
+  6. the Lame ring (edp/scenes/ring-lame.edp): pressure error against time per mesh level;
+  6b. the same against GetFEM on the same meshes (oracles/getfem_lame.py: agreement, time to
+     error)                                                                        ring_lame.py
+  7. the cost against the mesh size (issue 16): sleeve-circular from 1 729 to 98 841 nodes, ms per
+     step and per DC iteration, peak memory, setup, their exponents                scaling.py
+  7b. sleeve-axisymmetric's pull-out force under refinement: order, time to 1 %       pullout.py
+  8. sleeve-radial against numpy: the scene against oracles/radial_numpy.py (the same scheme
+     written again in vectorised numpy)                                           against_numpy.py
+The oracles (tools/bench/oracles: closed forms, the curve metric, the scheme in numpy, GetFEM) are
+independent of the code they check: they import nothing of python/sma.
+"""
+import argparse
+import json
+import os
+import sys
+import time
+
+import against_numpy
+import default_run
+import kernels
+import psor
+import pullout
+import report
+import ring_lame
+import scaling
+import study
+import work_precision
+from common import OUT, QUICK, machine
+
+# The sections that need no reference curve, each alone (--only): results/bench/only-<name>.json.
+ALONE = {"kernels": kernels.measure, "psor": psor.measure, "ring-lame": ring_lame.measure,
+         "scaling": lambda results: results.update(scaling=scaling.scaling(OUT, QUICK)),
+         "pullout": lambda results: results.update(pullout=pullout.measure(OUT, QUICK)),
+         "numpy": lambda results: results.update(radial_numpy=against_numpy.radial_against_numpy())}
+
+
+def main():
+    parser = argparse.ArgumentParser(prog="tools/bench/bench.py", description=__doc__.split("\n\n")[0],
+                                     epilog="Without --only: every section, results/bench/summary.json and "
+                                     "docs/benchmarks.md (make bench).")
+    parser.add_argument("--quick", action="store_true", help="a small grid, for checking the script itself")
+    parser.add_argument("--only", choices=sorted(ALONE), help="one section alone: its figures in "
+                        "results/bench/only-<name>.json (summary.json and docs/benchmarks.md untouched)")
+    args = parser.parse_args()
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    os.makedirs(OUT, exist_ok=True)
+    bench_start = time.perf_counter()
+    results = {"machine": machine(), "quick": QUICK}
+    if args.only:
+        ALONE[args.only](results)
+        path = os.path.join(OUT, f"only-{args.only}.json")
+        with open(path + ".partial", "w") as f:
+            json.dump(results, f, indent=2, allow_nan=False)
+        os.replace(path + ".partial", path)
+        print(f"bench: {args.only} done in {time.perf_counter() - bench_start:.0f} s: {os.path.relpath(path)}")
+        return
+    reference = study.radial_reference(results)
+    results["study"] = study.refinement_study(reference)
+    work_precision.measure(results, reference)
+    default_run.measure(results, reference)
+    kernels.measure(results)
+    psor.measure(results)
+    ring_lame.measure(results)
+    results["scaling"] = scaling.scaling(OUT, QUICK)
+    results["pullout"] = pullout.measure(OUT, QUICK)
+    results["radial_numpy"] = against_numpy.radial_against_numpy()
+
+    results["bench_wall_seconds"] = time.perf_counter() - bench_start
+    with open(os.path.join(OUT, "summary.json.partial"), "w") as f:
+        json.dump(results, f, indent=2, allow_nan=False)  # a NaN fails here, not in a reader
+    os.replace(os.path.join(OUT, "summary.json.partial"), os.path.join(OUT, "summary.json"))
+    report.write_doc(results, plt)
+    print(f"bench: done in {results['bench_wall_seconds']:.0f} s: results/bench/summary.json, docs/benchmarks.md")
+
+
+if __name__ == "__main__":
+    sys.exit(main())
