@@ -8,7 +8,10 @@
   (b) every path tools/... written in a tracked file (the Makefile, the tests, the docs, README,
       the scripts' comments, the tools themselves) names a file or folder that exists: a move
       that left a caller behind fails here, naming the file and line;
-  (c) every Python file of tools/ is under 400 lines (one job a file).
+  (c) every Python file of tools/ is under 400 lines (one job a file);
+  (d) every Python file of tools/ imports as its own script would (its folder first on sys.path,
+      nothing run: __name__ is not "__main__"): a module it names that a move left behind fails
+      here, not when a user's `make run` draws its figures.
 Writes results/checks/tools_layout.json.
 """
 import ast
@@ -81,6 +84,22 @@ longest = max(lengths, key=lengths.get)
 check(lengths[longest] < MAX_LINES, f"(c) the {len(lengths)} Python files of tools/ are under {MAX_LINES} lines "
       f"(longest: {longest}, {lengths[longest]})")
 
+# (d)
+LOADER = ("import importlib.util, os, sys\n"
+          "path = sys.argv[1]\n"
+          "sys.path.insert(0, os.path.dirname(path))\n"
+          "spec = importlib.util.spec_from_file_location('tool_under_test', path)\n"
+          "spec.loader.exec_module(importlib.util.module_from_spec(spec))\n")
+broken = {}
+for rel in sorted(lengths):
+    proc = subprocess.run(["/usr/bin/python3", "-c", LOADER, os.path.join(ROOT, rel)], cwd=ROOT,
+                          capture_output=True, text=True, timeout=120)
+    if proc.returncode != 0:
+        broken[rel] = (proc.stderr.strip().splitlines() or ["exit %d" % proc.returncode])[-1]
+check(not broken, f"(d) the {len(lengths)} Python files of tools/ import as their scripts would"
+      + "".join(f"; {rel}: {why}" for rel, why in broken.items()))
+
 record("tools_layout", {"oracles": sorted(siblings), "tools_paths_named": named, "stale_paths": stale,
-                        "python_files": len(lengths), "longest": [longest, lengths[longest]]})
+                        "python_files": len(lengths), "longest": [longest, lengths[longest]],
+                        "import_failures": broken})
 finish()

@@ -11,7 +11,6 @@ results/sleeve-life/:
   fields.png                radial profiles at the three instants (tools/plot/plot_sleeve-radial.py's)
 Usage: tools/plot/plot_sleeve-life.py results/sleeve-life
 """
-import results_io
 import os
 import sys
 
@@ -20,7 +19,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tools/: units
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tools/: results_io, units
+import results_io  # noqa: E402
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from sleeve_curves import read_csv  # noqa: E402
 from sma.plotting import save  # noqa: E402
