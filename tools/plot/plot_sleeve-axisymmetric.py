@@ -85,12 +85,17 @@ def pullout(outdir, summary):
     w = [abs(v) * 1e3 for v in d["pipe_displacement"]]
     fig, ax = plt.subplots(figsize=(8, 4.5))
     # -axial_force: the pipe moves along -z, the friction it drags the sleeve with is then > 0; it
-    # starts negative, from the clamping's own friction (the sleeve's axial contraction held back)
-    ax.plot(w, [-v / 1e3 for v in d["axial_force"]], lw=1.2, marker=".", ms=3,
-            label="axial force on the sleeve, towards the held face")
-    ax.plot(w, [summary["mu"] * v / 1e3 for v in d["normal_force_total"]], lw=0.8, ls="--",
-            label=f"mu N (mu = {summary['mu']:g})")
-    ax.set_xlabel("pipe displacement towards the held end face (mm)")
+    # starts negative, from the clamping's own friction (the sleeve's axial contraction held back).
+    # -pulldirection away: the pipe moves along +z, axial_force itself.
+    away = summary.get("pull_direction", "towards") == "away"
+    words = "away from" if away else "towards"
+    force = [(v if away else -v) / 1e3 for v in d["axial_force"]]
+    ax.plot(w, force, lw=1.2, marker=".", ms=3, label=f"axial force on the sleeve, {words} the held face")
+    mu_n = [summary["mu"] * v / 1e3 for v in d["normal_force_total"]]
+    ax.plot(w, mu_n, lw=0.8, ls="--", label=f"mu N (mu = {summary['mu']:g})")
+    if away:  # on the plateau from the first increment: no zoom onto round-off
+        ax.set_ylim(0, max(force + mu_n) * 1.08)
+    ax.set_xlabel(f"pipe displacement {words} the held end face (mm)")
     ax.set_ylabel("force (kN, whole circumference)")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
