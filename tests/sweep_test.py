@@ -40,7 +40,8 @@ On sleeve-radial (300 steps, about 0.5 s a run), -g swept over 250, 500, 1000 th
   oracle's closed form (tools/bench/oracles/lame.py, the ring's radii from the run's interference
   and meshes/sleeve-geometry.txt's thickness) within 1e-6, the final pressure it within 2e-3 (6
   layers); ring_cleared_pipe is 1 then 0 (at 60 um the ring never clears the pipe) and the sweep
-  prints one note, naming that run; a superellipse obstacle's table has no Lame column.
+  relays that run's note, naming it (one note in all); a superellipse obstacle's table has no Lame
+  column; sma.run on sleeve-radial hands that note to its `notes` function at 60 um, none at 55 um.
 Writes results/checks/sweep.json.
 """
 import json
@@ -303,11 +304,21 @@ def main():
             circle_lame.append(closed)
             circle_errors.append((abs(float(row.get("lame_pressure_Pa") or 0) / closed - 1),
                                   abs(float(row["final_pressure_mean_Pa"]) / closed - 1)))
-        notes = [ln for ln in circle.stderr.splitlines() if ln.startswith("note:")]
+        notes = [ln for ln in circle.stderr.splitlines() if "note:" in ln]
+        run_notes = {}  # sma.run hands the run's notes to a function (a notebook sees them on stderr)
+        for interference in (55e-6, 60e-6):
+            run_notes[interference] = []
+            sma.run("sleeve-radial", os.path.join(tmp, f"radial-{interference}"), notes=run_notes[interference].append,
+                    interference=interference, scale="reduced", steps=60)
+        check(not run_notes[55e-6] and len(run_notes[60e-6]) == 1
+              and run_notes[60e-6][0].startswith("note: sleeve-radial: the ring touches the pipe from the end of the first step")
+              and "ring_cleared_pipe false" in run_notes[60e-6][0],
+              f"(g) sma.run(sleeve-radial, interference 55e-6 / 60e-6, reduced) hands the run's notes over: "
+              f"{len(run_notes[55e-6])} / {run_notes[60e-6] or 'none'}")
         check(len(circle_errors) == 2 and all(e[0] <= 1e-6 for e in circle_errors)
               and max(e[1] for e in circle_errors) <= 2e-3
               and [row["ring_cleared_pipe"] for row in circle_table] == ["1", "0"]
-              and len(notes) == 1 and notes[0].startswith("note: -interference 60e-6: the ring touches the pipe")
+              and len(notes) == 1 and notes[0].startswith("-interference 60e-6: note: sleeve-circular: the ring touches the pipe")
               and shape_table and "lame_pressure_Pa" not in shape_table[0],
               f"(g) sleeve-circular over -interference 55e-6 60e-6 (coarse, reduced): lame_pressure_Pa = the "
               f"oracle's closed form within {max((e[0] for e in circle_errors), default=1):.1e} (<= 1e-6: the VTU's "

@@ -416,8 +416,9 @@ def run_grid(out, scene, params, grid, fixed, jobs, record=None, say=print, warn
     say(f"sweep: {scene} " + " x ".join(f"-{p} over {' '.join(t)}" for p, t in zip(params, texts))
         + f" ({jobs} at a time) into {out}/", flush=True)
 
-    def one(i):
-        return driver.run(scene, folders[i], **fixed, **dict(zip(params, values[i])))
+    def one(i):  # the run's notes and warnings named by its values
+        return driver.run(scene, folders[i], notes=lambda line: warn(f"{label[i]}: {line}"), **fixed,
+                          **dict(zip(params, values[i])))
 
     failures = {}
     # Threads suffice: each one waits on its FreeFEM process.
@@ -445,10 +446,6 @@ def run_grid(out, scene, params, grid, fixed, jobs, record=None, say=print, warn
                 failures[i] = str(e)
                 warn(f"error: {label[i]}: {e}")
     done = [i for i in range(len(combos)) if i not in failures]
-    for i in done:  # the run's note, which its own console line gave (the sweep keeps it in the run's log)
-        if results[i].summary.get("ring_cleared_pipe") is False:
-            warn(f"note: {label[i]}: the ring touches the pipe from the end of the first step: no zero-force "
-                 f"stage (it never cleared the pipe, or for less than one step); table.csv: ring_cleared_pipe 0")
     header, rows = table_rows(params, [combos[i] for i in done],
                               [figures_of(results[i].summary, results[i].history, lame_2d(results[i])) for i in done])
     write_table(os.path.join(out, "table.csv"), header, rows)
