@@ -41,7 +41,8 @@ On sleeve-radial (300 steps, about 0.5 s a run), -g swept over 250, 500, 1000 th
   and meshes/sleeve-geometry.txt's thickness) within 1e-6, the final pressure it within 2e-3 (6
   layers); ring_cleared_pipe is 1 then 0 (at 60 um the ring never clears the pipe) and the sweep
   relays that run's note, naming it (one note in all); a superellipse obstacle's table has no Lame
-  column; sma.run on sleeve-radial hands that note to its `notes` function at 60 um, none at 55 um.
+  column; sma.run on sleeve-radial hands that note to its `notes` function at 60 um, none at 55 um;
+  sleeve-axisymmetric's table has its closed forms (open_cylinder_pressure_Pa, plane_strain_pressure_Pa).
 Writes results/checks/sweep.json.
 """
 import json
@@ -305,6 +306,15 @@ def main():
             circle_errors.append((abs(float(row.get("lame_pressure_Pa") or 0) / closed - 1),
                                   abs(float(row["final_pressure_mean_Pa"]) / closed - 1)))
         notes = [ln for ln in circle.stderr.splitlines() if "note:" in ln]
+        axi_out = os.path.join(tmp, "axi")
+        axi = sweep_tool("sleeve-axisymmetric", "interference", "4e-4", "5e-4", "--out", axi_out, "--",
+                         "-steps", "60", "-nr", "4")
+        axi_table = rows(os.path.join(axi_out, "table.csv")) if axi.returncode == 0 else []
+        axi_bad = [(row["interference"], key) for row in axi_table for key in ("open_cylinder_pressure", "plane_strain_pressure")
+                   if float(row.get(key + "_Pa") or 0) != sma.read(os.path.join(axi_out, f"interference={row['interference']}")).summary[key]]
+        check(len(axi_table) == 2 and not axi_bad,
+              f"(g) sleeve-axisymmetric over -interference 4e-4 5e-4: table.csv's open_cylinder_pressure_Pa and "
+              f"plane_strain_pressure_Pa are the runs' closed forms (differing: {axi_bad or 'none'}) {first_error(axi) if axi.returncode else ''}")
         run_notes = {}  # sma.run hands the run's notes to a function (a notebook sees them on stderr)
         for interference in (55e-6, 60e-6):
             run_notes[interference] = []

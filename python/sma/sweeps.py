@@ -42,6 +42,8 @@ KEY_FIGURES = [("first_contact_step", "first_contact_step"), ("first_contact_tim
                ("final_pressure_mean", "final_pressure_mean_Pa"), ("peak_pressure_mean", "peak_pressure_mean_Pa"),
                ("peak_step", "peak_step"), ("final_pressure_non_uniformity", "final_pressure_non_uniformity"),
                ("lame_pressure", "lame_pressure_Pa"),  # Lame's closed form (the radial model's; a circle's: lame_2d)
+               # sleeve-axisymmetric's closed forms: the open-ended long sleeve's and plane strain's
+               ("open_cylinder_pressure", "open_cylinder_pressure_Pa"), ("plane_strain_pressure", "plane_strain_pressure_Pa"),
                ("ring_cleared_pipe", "ring_cleared_pipe"),  # 1 cleared; 0: in contact from step 1, no zero-force stage
                # the coupling's life (sleeve-life): the design chart's figures
                ("T_forward_free", "T_forward_free_K"), ("T_reverse_free", "T_reverse_free_K"),
