@@ -10,7 +10,9 @@
     scripts' comments, tests, tools, the pages' prose) names an existing heading of that page;
   * the anchor rule is GitHub's: the heading's text lowercased, every character that is not a
     letter, digit, space, hyphen or underscore dropped, each space turned into a hyphen, and a
-    repeated anchor suffixed -1, -2, ...; checked first on headings whose GitHub anchors are known.
+    repeated anchor suffixed -1, -2, ...; checked first on headings whose GitHub anchors are known;
+  * docs/parameters.md is a handout: every table row (a choice and its reason) at most 400
+    characters, the evidence in docs/measurements.md (a row of 405 slipped in unnoticed).
 Writes results/checks/docs.json.
 """
 import os
@@ -172,6 +174,14 @@ for rel, text in sorted(texts.items()):
                 unresolved.append(f"{rel}:{number}: no heading #{anchor} in {page}")
 check(mentions > 0 and not unresolved, f"{mentions} docs/<page>.md#anchor references in the "
       "tracked files resolve: " + ("; ".join(unresolved[:10]) or "all"))
+
+# ---- docs/parameters.md: rows a student reads at a glance ----
+ROW_LIMIT = 400
+long_rows = [(number, len(line)) for number, line in
+             enumerate(read_text(os.path.join("docs", "parameters.md")).split("\n"), 1)
+             if line.startswith("|") and len(line) > ROW_LIMIT]
+check(not long_rows, f"docs/parameters.md: every table row at most {ROW_LIMIT} characters (move the evidence to "
+      "docs/measurements.md): " + (", ".join(f"line {n} has {k}" for n, k in long_rows) or "all"))
 
 record("docs", {"text_files": len(texts), "pages": pages, "links": links, "broken_links": broken,
                 "anchor_references": mentions, "unresolved_references": unresolved,

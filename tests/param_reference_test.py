@@ -8,7 +8,9 @@
     by library files not converted yet), and each PENDING entry is still needed;
   * probe run per script: every option -help printed, given at its printed default, then one
     unknown option last: CheckOptions must refuse only the probe (so every default parses as the
-    printed type), and the names it says the script reads must be the printed ones, in order;
+    printed type), and the names it says the script reads must be the printed ones, in order; a
+    scene or variant names itself (the refusal's "error: <name>:") after its file and its -out
+    default is results/<name> or results/variants/<name> (where make run reads);
   * the printed defaults are the values the scenes use: beam, ring-lame and free-ring are run (on
     one mesh level, a short programme) and their summary.json parameters compared with -help;
   * -help anywhere among the options (alone, with "text", after -name value pairs, beside an
@@ -83,6 +85,8 @@ def probe(name, s):
     check(run.returncode != 0 and f"unknown option {PROBE} " in message,
           f"{name}: all {len(s['options'])} options accepted at their printed defaults, the probe refused"
           + ("" if message else f" (exit {run.returncode}: {(run.stdout + run.stderr).strip()[-300:]})"))
+    if s["kind"] in OWN_FOLDER:
+        own_names(name, s, message)
     read = re.search(r" reads (.*)\)\s*$", message)
     registered = read.group(1).split() if read else []
     printed = [o["name"] for o in s["options"]]
@@ -91,6 +95,23 @@ def probe(name, s):
           f"{sorted(set(printed) - set(registered))})")
     return {"options": len(printed), "registered": len(registered),
             "undocumented": sum(1 for o in s["options"] if not o["meaning"])}
+
+
+# A scene's or a variant's results folder, where make run looks for them (the Makefile's RUN_RESULTS).
+OWN_FOLDER = {"scene": "results/{}", "variant": "results/variants/{}"}
+
+
+def own_names(name, s, message):
+    """A scene or variant names itself after its file, and writes by default where make run reads
+    (a copied variant that kept the original's name wrote into the original's folder, and make run
+    then found no summary.json in its own)."""
+    said = re.match(r"error: (\S+): unknown option", message)
+    out = next((o["default"] for o in s["options"] if o["name"] == "-out"), None)
+    folder = OWN_FOLDER[s["kind"]].format(name)
+    check(said and said.group(1) == name and out == folder,
+          f"{s['path']}: names itself {said.group(1) if said else '?'} (messages, summary.json) and writes to "
+          f"-out {out} by default: both must be its file's name, {name} and {folder} (a copied script keeps "
+          "the original's: set them, as docs/variants.md says)")
 
 
 def same_value(printed, used):

@@ -34,7 +34,15 @@ On sleeve-radial (300 steps, about 0.5 s a run), -g swept over 250, 500, 1000 th
   VALUES2='250 1000', -steps 60): one folder per combination, table.csv's rows in the grid's order
   with both values first, each equal to its run's summary.json; the final pressure is Lame's closed
   form (the summary's lame_pressure) within 2 dc_tol at each interference and the same for both g;
-  the panel figures exist; PARAM2 without VALUES2 and PARAM2 = PARAM fail naming them, before any run.
+  the panel figures exist; PARAM2 without VALUES2 and PARAM2 = PARAM fail naming them, before any run;
+  (g) sleeve-circular swept over -interference 55e-6, 60e-6 (coarse mesh, -scale reduced, 200
+  steps): the table's lame_pressure_Pa (computed by the sweep for concentric circles) equals the
+  oracle's closed form (tools/bench/oracles/lame.py, the ring's radii from the run's interference
+  and meshes/sleeve-geometry.txt's thickness) within 1e-6, the final pressure it within 2e-3 (6
+  layers); ring_cleared_pipe is 1 then 0 (at 60 um the ring never clears the pipe) and the sweep
+  relays that run's note, naming it (one note in all); a superellipse obstacle's table has no Lame
+  column; sma.run on sleeve-radial hands that note to its `notes` function at 60 um, none at 55 um;
+  sleeve-axisymmetric's table has its closed forms (open_cylinder_pressure_Pa, plane_strain_pressure_Pa).
 Writes results/checks/sweep.json.
 """
 import json
@@ -49,6 +57,8 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from checklib import ROOT, check, finish, record, rows  # noqa: E402
 import sma_driver as sma  # noqa: E402  (checklib puts tools/ on the path)
 import sweep  # noqa: E402
+import lame  # noqa: E402  (tools/bench/oracles: Lame's closed forms, independent of the package)
+from sleeve_geometry import sleeve_geometry  # noqa: E402
 
 VALUES = ["250", "500", "1000"]
 COMMON = ["-steps", "300"]
@@ -278,7 +288,56 @@ def main():
               and same_param.returncode == 2 and "PARAM2 'g' is PARAM too" in same_param.stderr
               and not os.path.exists(os.path.join(tmp, "y")),
               f"(f) PARAM2 without VALUES2: {first_error(no_values2)}; PARAM2 = PARAM: {first_error(same_param)}")
-        measured = {"grid_final_pressures_Pa": [grid_finals.get(c) for c in combos],
+        # (g) the 2D circle: Lame's column computed by the sweep, the clearance reported.
+        circle_out, shape_out = os.path.join(tmp, "circle"), os.path.join(tmp, "shape")
+        reduced = ["-mesh", "meshes/sleeve-coarse.msh", "-steps", "200", "-scale", "reduced"]
+        circle = sweep_tool("sleeve-circular", "interference", "55e-6", "60e-6", "--out", circle_out, "--", *reduced)
+        shape = sweep_tool("sleeve-superellipse", "p", "2.5", "--out", shape_out, "--", *reduced)
+        circle_table = rows(os.path.join(circle_out, "table.csv")) if circle.returncode == 0 else []
+        shape_table = rows(os.path.join(shape_out, "table.csv")) if shape.returncode == 0 else []
+        geometry = sleeve_geometry()  # the mesh's ring; -interference moves its inner radius, its thickness kept
+        circle_errors, circle_lame = [], []
+        for row in circle_table:
+            summary = sma.read(os.path.join(circle_out, f"interference={row['interference']}")).summary
+            par = summary["parameters"]
+            ri = par["pipe_A"] - float(row["interference"])
+            closed = lame.lame_pressure(par["E"], par["nu"], ri, ri + geometry["Hr"], par["pipe_A"] - ri, par["plane"])
+            circle_lame.append(closed)
+            circle_errors.append((abs(float(row.get("lame_pressure_Pa") or 0) / closed - 1),
+                                  abs(float(row["final_pressure_mean_Pa"]) / closed - 1)))
+        notes = [ln for ln in circle.stderr.splitlines() if "note:" in ln]
+        axi_out = os.path.join(tmp, "axi")
+        axi = sweep_tool("sleeve-axisymmetric", "interference", "4e-4", "5e-4", "--out", axi_out, "--",
+                         "-steps", "60", "-nr", "4")
+        axi_table = rows(os.path.join(axi_out, "table.csv")) if axi.returncode == 0 else []
+        axi_bad = [(row["interference"], key) for row in axi_table for key in ("open_cylinder_pressure", "plane_strain_pressure")
+                   if float(row.get(key + "_Pa") or 0) != sma.read(os.path.join(axi_out, f"interference={row['interference']}")).summary[key]]
+        check(len(axi_table) == 2 and not axi_bad,
+              f"(g) sleeve-axisymmetric over -interference 4e-4 5e-4: table.csv's open_cylinder_pressure_Pa and "
+              f"plane_strain_pressure_Pa are the runs' closed forms (differing: {axi_bad or 'none'}) {first_error(axi) if axi.returncode else ''}")
+        run_notes = {}  # sma.run hands the run's notes to a function (a notebook sees them on stderr)
+        for interference in (55e-6, 60e-6):
+            run_notes[interference] = []
+            sma.run("sleeve-radial", os.path.join(tmp, f"radial-{interference}"), notes=run_notes[interference].append,
+                    interference=interference, scale="reduced", steps=60)
+        check(not run_notes[55e-6] and len(run_notes[60e-6]) == 1
+              and run_notes[60e-6][0].startswith("note: sleeve-radial: the ring touches the pipe from the end of the first step")
+              and "ring_cleared_pipe false" in run_notes[60e-6][0],
+              f"(g) sma.run(sleeve-radial, interference 55e-6 / 60e-6, reduced) hands the run's notes over: "
+              f"{len(run_notes[55e-6])} / {run_notes[60e-6] or 'none'}")
+        check(len(circle_errors) == 2 and all(e[0] <= 1e-6 for e in circle_errors)
+              and max(e[1] for e in circle_errors) <= 2e-3
+              and [row["ring_cleared_pipe"] for row in circle_table] == ["1", "0"]
+              and len(notes) == 1 and notes[0].startswith("-interference 60e-6: note: sleeve-circular: the ring touches the pipe")
+              and shape_table and "lame_pressure_Pa" not in shape_table[0],
+              f"(g) sleeve-circular over -interference 55e-6 60e-6 (coarse, reduced): lame_pressure_Pa = the "
+              f"oracle's closed form within {max((e[0] for e in circle_errors), default=1):.1e} (<= 1e-6: the VTU's "
+              f"single-precision outer radius), final pressure within {max((e[1] for e in circle_errors), default=1):.1e}"
+              f" of it (<= 2e-3, 6 layers); ring_cleared_pipe {[row.get('ring_cleared_pipe') for row in circle_table]}"
+              f" (expected 1, 0), notes {notes or first_error(circle)}; the superellipse's table without a Lame "
+              f"column {list(shape_table[0]) if shape_table else first_error(shape)}")
+        measured = {"circle_lame_Pa": circle_lame, "circle_lame_and_final_errors": circle_errors,
+                    "grid_final_pressures_Pa": [grid_finals.get(c) for c in combos],
                     "first_contact_steps": first, "austenite_steps": austenite, "final_pressures_Pa": finals,
                     "final_relative_spread": spread, "final_spread_bound": bound,
                     "table_columns": list(table[0])}

@@ -17,7 +17,7 @@ the cores). Writes DIR (default results/sweeps/<scene>-<param>):
                        without those keys (beam, ring-lame, free-ring): every number of its
                        summary.json, named by its key (docs/outputs.md gives the units)
   force-temperature.png, force-time.png   scenes whose history.csv has a contact pressure: the
-                       mean contact pressure (MPa) against the mean inner-surface temperature (C),
+                       mean contact pressure (MPa) against the mean inner-surface temperature (°C),
                        and against time (s) zoomed on the transient (0 to a quarter past the last
                        run's austenite), the whole run in a small panel; curves that coincide
                        within 0.1 % share a legend entry that says so. Other scenes: the table only

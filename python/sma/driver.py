@@ -18,6 +18,7 @@ import numbers
 import os
 import re
 import subprocess
+import sys
 
 import numpy as np
 
@@ -171,11 +172,14 @@ def folder(out):
     return os.path.normpath(os.path.join(ROOT, path))
 
 
-def run(scene, out, quiet=True, **values):
+def run(scene, out, quiet=True, notes=True, **values):
     """Runs the scene into `out` with the options `values` (g=1000, steps=300); returns `out` as an
     absolute path (a relative `out` is taken from the repository root).
-    quiet=True adds -quiet 1 when the scene has that option (no line per step). Raises SceneError
-    naming the scene and its options, with the run's error line and the last lines of its log."""
+    quiet=True adds -quiet 1 when the scene has that option (no line per step). The run's `note:`
+    and `warning:` lines (a ring that never cleared the pipe, a loop that did not converge) are
+    printed to stderr (notes=True), passed to `notes` when it is a function of the line, or
+    dropped (False). Raises SceneError naming the scene and its options, with the run's error line
+    and the last lines of its log."""
     if quiet and "quiet" in options(scene) and "quiet" not in values:
         values["quiet"] = 1
     path = folder(out)
@@ -191,6 +195,11 @@ def run(scene, out, quiet=True, **values):
     written = os.path.join(path, "summary.json")
     if not os.path.isfile(written):
         raise SceneError(f"{scene} {' '.join(words[2:])} exited 0 but wrote no {written}: nothing was computed")
+    if notes:
+        say = notes if callable(notes) else (lambda line: print(line, file=sys.stderr, flush=True))
+        for line in (result.stdout + "\n" + result.stderr).splitlines():
+            if line.startswith(("note:", "warning:")):
+                say(line)
     return path
 
 

@@ -41,7 +41,10 @@ KEY_FIGURES = [("first_contact_step", "first_contact_step"), ("first_contact_tim
                ("T_inner_austenite", "T_inner_austenite_K"),
                ("final_pressure_mean", "final_pressure_mean_Pa"), ("peak_pressure_mean", "peak_pressure_mean_Pa"),
                ("peak_step", "peak_step"), ("final_pressure_non_uniformity", "final_pressure_non_uniformity"),
-               ("lame_pressure", "lame_pressure_Pa"),  # (the radial model: Lame's closed form at the end)
+               ("lame_pressure", "lame_pressure_Pa"),  # Lame's closed form (the radial model's; a circle's: lame_2d)
+               # sleeve-axisymmetric's closed forms: the open-ended long sleeve's and plane strain's
+               ("open_cylinder_pressure", "open_cylinder_pressure_Pa"), ("plane_strain_pressure", "plane_strain_pressure_Pa"),
+               ("ring_cleared_pipe", "ring_cleared_pipe"),  # 1 cleared; 0: in contact from step 1, no zero-force stage
                # the coupling's life (sleeve-life): the design chart's figures
                ("T_forward_free", "T_forward_free_K"), ("T_reverse_free", "T_reverse_free_K"),
                ("hysteresis_width_free", "hysteresis_width_free_K"), ("storage_margin", "storage_margin_K"),
@@ -104,12 +107,58 @@ def step_time(history, step):
     return float(history["t"][rows[0]]) if len(rows) else None
 
 
-def figures_of(summary, history):
-    """{key: value} of one run's key figures (the times from history.csv)."""
+def _lame_shrink_fit(a, b, delta, E, nu, plane):
+    """Lame's shrink-fit pressure (Pa) of a ring a < r < b (m), free outside, pushed out by delta
+    (m) at r = a, plane strain or stress (edp/model/material.idp LameShrinkFitPressure)."""
+    mu = E / (2 * (1 + nu))
+    lam = E * nu / ((1 + nu) * (1 - 2 * nu))
+    if plane == "stress":
+        lam = 2 * lam * mu / (lam + 2 * mu)
+    C = delta / (mu * a / ((lam + mu) * b ** 2) + 1 / a)
+    return 2 * mu * C * (1 / a ** 2 - 1 / b ** 2)
+
+
+def lame_2d(results):
+    """Lame's closed form (Pa) for a 2D sleeve run whose ring and rigid pipe are concentric circles,
+    else None. The obstacle is checked, not assumed (a variant may replace it): at every node of
+    contact-final.csv the initial gap (its gap minus n.u, n the radial direction, u from
+    fields-3-end.vtu) must be the ring's inner radius minus -pipeA. The outer radius is the mesh's
+    (the VTU's points, single precision: to about 1e-7). The final mean pressure of an
+    all-austenite ring tends to it as the mesh is refined (the sweep table's lame_pressure_Pa)."""
+    s = results.summary
+    p = s.get("parameters", {})
+    need = ("pipe_A", "pipe_B", "ring_inner_radius", "E", "nu", "plane")
+    if "lame_pressure" in s or "pipe" in s or not all(k in p for k in need) or p.get("offset", 0) != 0 \
+            or p["pipe_A"] != p["pipe_B"] or not all(os.path.isfile(results.path(n)) for n in
+                                                    ("fields-3-end.vtu", "contact-final.csv")):
+        return None
+    fields = results.fields("3-end")
+    points, u = fields.points[:, :2], fields.point_data["displacement"][:, :2]
+    a, pipe = p["ring_inner_radius"], p["pipe_A"]
+    contact = driver.read_csv(results.path("contact-final.csv"))
+    if "gap" not in contact or len(contact["gap"]) == 0:
+        return None
+    xy = np.column_stack([contact["x"], contact["y"]])
+    node = [int(np.argmin(np.hypot(*(points - q).T))) for q in xy]
+    n = xy / np.hypot(*xy.T)[:, None]
+    initial_gap = contact["gap"] - np.sum(n * u[node], axis=1)
+    if np.abs(initial_gap - (a - pipe)).max() > 1e-6 * abs(pipe - a) + 1e-12:
+        return None  # an obstacle or a ring of its own shape
+    b = float(np.hypot(*points.T).max())
+    return _lame_shrink_fit(a, b, pipe - a, p["E"], p["nu"], p["plane"]) + 0.0
+
+
+def figures_of(summary, history, lame=None):
+    """{key: value} of one run's key figures (the times from history.csv; `lame`, a 2D circle's
+    Lame pressure from lame_2d, when the summary has none)."""
     figures = dict(summary)
     for time_key, step_key in STEP_TIMES.items():
         if step_key in summary:
             figures[time_key] = step_time(history, summary[step_key])
+    if lame is not None and "lame_pressure" not in figures:
+        figures["lame_pressure"] = lame
+    if isinstance(figures.get("ring_cleared_pipe"), bool):  # a number, as every column of table.csv
+        figures["ring_cleared_pipe"] = int(figures["ring_cleared_pipe"])
     return figures
 
 
@@ -369,8 +418,9 @@ def run_grid(out, scene, params, grid, fixed, jobs, record=None, say=print, warn
     say(f"sweep: {scene} " + " x ".join(f"-{p} over {' '.join(t)}" for p, t in zip(params, texts))
         + f" ({jobs} at a time) into {out}/", flush=True)
 
-    def one(i):
-        return driver.run(scene, folders[i], **fixed, **dict(zip(params, values[i])))
+    def one(i):  # the run's notes and warnings named by its values
+        return driver.run(scene, folders[i], notes=lambda line: warn(f"{label[i]}: {line}"), **fixed,
+                          **dict(zip(params, values[i])))
 
     failures = {}
     # Threads suffice: each one waits on its FreeFEM process.
@@ -399,7 +449,7 @@ def run_grid(out, scene, params, grid, fixed, jobs, record=None, say=print, warn
                 warn(f"error: {label[i]}: {e}")
     done = [i for i in range(len(combos)) if i not in failures]
     header, rows = table_rows(params, [combos[i] for i in done],
-                              [figures_of(results[i].summary, results[i].history) for i in done])
+                              [figures_of(results[i].summary, results[i].history, lame_2d(results[i])) for i in done])
     write_table(os.path.join(out, "table.csv"), header, rows)
 
     runs = [results[i] for i in done]

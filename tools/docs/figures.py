@@ -89,7 +89,15 @@ def main():
                 f"{coincide_text(r, s)}. The coarse-mesh test (tests/sleeve_circular_test.py, "
                 f"{c['steps']} steps) finds the same four phases: linear R^2 = {c['linear_r2']:.5f}, largest rise "
                 f"{c['largest_jump_Pa'] / 1e6:.2f} MPa per step, constant to {c['final_spread']:.1e}. "
-                "Temperature in circular bands (the fields).",
+                "Temperature in circular bands (the fields)."
+                " Two patterns in the figures are the mesh's, not the solution's: the radial stress of "
+                'fields-2-contact.png alternates from triangle to triangle (one stress per P1 triangle, and the '
+                'triangles of a layer alternate in orientation, so a layer shows two values: the periodic blobs),'
+                ' and while the contact closes every other inner node touches for a few steps (the sawtooth of '
+                "the gap in displacement.png: on the coarse mesh at `-scale reduced`, 600 steps, history.csv's "
+                'contact_nodes is 15 of 31 from t = 4 to 5.75 s, then 31); both are the P1 checkerboard the '
+                'pressure filter removes from the curves ([outputs.md](outputs.md#the-figures-'
+                'toolsplotplot_sleevepy)).',
                 "",
                 f"*The paper's scheme* (`-phasemodel onoff`, meshes/sleeve-quarter.msh, "
                 f"tests/sleeve_convergence_test.py): the reversion comes in jumps, "

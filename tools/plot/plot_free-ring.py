@@ -37,10 +37,10 @@ def main():
     for d, label in zip(extra[::2], extra[1::2]):
         ax.plot(read(d)["t"], [celsius(T) for T in read(d)["T_mean"]], ":", label=label)
     T0 = results_io.read_json(os.path.join(outdir, "summary.json"))["parameters"]["T0"]
-    ax.axhline(celsius(T0), color="0.6", lw=0.6, label=f"T0 = {celsius(T0):.2f} C")
+    ax.axhline(celsius(T0), color="0.6", lw=0.6, label=f"T0 = {celsius(T0):.2f} °C")
     ax.set_ylabel("T (°C)")
     ax.legend(fontsize=8)
-    ax.set_title(f"free ring cooled and heated through T0 = {celsius(T0):.2f} C ({T0:g} K)")
+    ax.set_title(f"free ring cooled and heated through T0 = {celsius(T0):.2f} °C ({T0:g} K)")
     bx.plot(h["t"], h["fraction_austenite"], label="austenite")
     bx.plot(h["t"], h["fraction_m1"], label="martensite 1")
     bx.plot(h["t"], h["fraction_m2"], label="martensite 2")
