@@ -15,6 +15,10 @@
 //   long FractionReversals(real[] chiStart, real[] chi, real[] reverted, real tol)
 //       points whose martensite fraction grew by > tol over a step after having lost fraction
 //       earlier (reverted: 0/1 per point, in/out; plugin/core/phase_fraction.hpp).
+//   long FractionSnapUnstable(real[] chiBefore2, real[] chiBefore, real[] chiStart, real[] alpha,
+//                             real[] snapped, real[] chi, real[] s)
+//       the DC loop's move of points whose fraction runs away (increments that do not shrink)
+//       to the end of their interval (plugin/core/phase_fraction.hpp); returns how many moved.
 //   real AuchmutyLocal(real[] trace, real[] alpha, real[] c, real[] s, real[] weight)
 //   real AuchmutyLocalDissipative(real[] trace, alpha, c, s, weight, law (7 values), local)
 //       sum_i w_i (phi2*(s_i) - trace_i s_i), the sigma2 part of L_II [45].
@@ -217,6 +221,15 @@ long FractionReversals(KN<double>* const& chiStart, KN<double>* const& chi,
                        KN<double>* const& reverted, const double& tol) {
   return guarded("FractionReversals", [&] {
     return (long)sma::count_reversals(cview(chiStart), cview(chi), view(reverted), tol);
+  });
+}
+
+long FractionSnapUnstable(KN<double>* const& before2, KN<double>* const& before,
+                          KN<double>* const& start, KN<double>* const& alpha,
+                          KN<double>* const& snapped, KN<double>* const& chi, KN<double>* const& s) {
+  return guarded("FractionSnapUnstable", [&] {
+    return (long)sma::snap_unstable_fractions(cview(before2), cview(before), cview(start), cview(alpha),
+                                              view(snapped), view(chi), view(s));
   });
 }
 
@@ -695,6 +708,8 @@ static void Load_Init() {
   Global.Add("PhaseFractionProject", "(",
              new OneOperator7_<long, A, A, A, A, A, A, A>(PhaseFractionProject));
   Global.Add("FractionReversals", "(", new OneOperator4_<long, A, A, A, double>(FractionReversals));
+  Global.Add("FractionSnapUnstable", "(",
+             new OneOperator7_<long, A, A, A, A, A, A, A>(FractionSnapUnstable));
   Global.Add("PhaseCoefficients", "(", new OneOperator4_<long, A, A, A, A>(PhaseCoefficients));
   Global.Add("ObstacleGap", "(", new OneOperator6_<long, A, A, A, A, A, A>(ObstacleGap));
   Global.Add("PsorCondensed", "(",

@@ -14,6 +14,9 @@
   * periodicity: the pressure over the last cycle equals the one before step by step (the period a
     whole number of steps), max difference below 1e-6 of the clamping pressure, and the cycles' end
     pressures agree;
+  * the fraction model (-phasemodel fraction) at k = 1 MPa: every loop converges (at most 500
+    fixed-point and 1000 DC iterations a step, heat balance 1e-9); clamping pressure, dissipated heat
+    and clearance equal the on/off run's to 1e-9, 1e-3 and 2e-3;
   * a run stopped in service (-stopafter 1600) and resumed from its checkpoint gives the
     uninterrupted run's files;
   * storage above the free ring's reverse start (-storageT T_r + 5 K): the run fails with
@@ -113,6 +116,32 @@ def main():
                        "periodicity_max_difference": diff, "swing": swing,
                        "service_pressure_min": s1["service_pressure_min"],
                        "pressure_at_service_Tmin": s1["pressure_at_service_Tmin"]}
+
+    # ---- the fraction model at the same data: its loops converge (the DC loop moves runaway points
+    # to the end of their interval, plugin/core/phase_fraction.hpp; it stopped at 100 DC
+    # iterations at step 98 before) and its figures meet the on/off run's ----
+    frac, done = run("sleeve-life", "sleeve-life-k1e6-fraction", *COARSE, "-dissipation", "1e6", "-cycles", "3",
+                     "-phasemodel", "fraction")
+    check(done.returncode == 0, f"sleeve-life -dissipation 1e6 -phasemodel fraction ran: every DC loop and fixed "
+          f"point converged to its tolerance (exit {done.returncode}: a loop at its limit fails the run)")
+    if done.returncode == 0:
+        sf = summary(frac)
+        check(sf["unconverged_loops"] == 0 and sf["fixed_point_iterations_max"] <= 500 and sf["dc_iterations_max"] <= 1000
+              and sf["heat_balance_residual_max"] <= 1e-9,
+              f"fraction model: at most {sf['fixed_point_iterations_max']} fixed-point iterations and "
+              f"{sf['dc_iterations_max']} DC iterations a step (bounds 500, 1000), heat balance "
+              f"{sf['heat_balance_residual_max']:.2g}")
+        clamp = abs(sf["clamp_pressure"] - s1["clamp_pressure"]) / s1["clamp_pressure"]
+        heat = abs(sf["heat_dissipated"] - s1["heat_dissipated"]) / s1["heat_dissipated"]
+        gap = abs(sf["installation_clearance"] - s1["installation_clearance"]) / s1["installation_clearance"]
+        check(clamp <= 1e-9 and heat <= 1e-3 and gap <= 2e-3,
+              f"fraction against on/off: clamping pressure {sf['clamp_pressure']:.9g} / {s1['clamp_pressure']:.9g} Pa "
+              f"(relative {clamp:.2g}), heat dissipated {sf['heat_dissipated']:.6g} / {s1['heat_dissipated']:.6g} J/m "
+              f"({heat:.2g}), clearance {sf['installation_clearance'] * 1e6:.4f} / "
+              f"{s1['installation_clearance'] * 1e6:.4f} um ({gap:.2g})")
+        figures["k1e6_fraction"] = {key: sf[key] for key in (
+            "fixed_point_iterations_max", "dc_iterations_max", "clamp_pressure", "heat_dissipated",
+            "installation_clearance", "service_pressure_min", "pressure_at_service_Tmin")}
 
     # ---- a run stopped in service and resumed from its checkpoint (the life's own state included)
     cut, done = run("sleeve-life", "sleeve-life-k1e6-cut", *COARSE, "-dissipation", "1e6", "-cycles", "3",

@@ -180,6 +180,48 @@ inline std::size_t project_fractions(const ThermalLaw& law, span<const double> t
   return changed;
 }
 
+// The DC loop's move along an unstable mode (fraction model with the dissipative law, called by
+// edp/solvers/dc.idp after each local step). The DC loop is a fixed point chi <- local(global(chi))
+// whose slope along a mode is M / (D + q): M the mechanical trace response of the mode (alpha^2
+// times the compliance it sees, about q = alpha^2 / (lambda + 2 mu) for one point, up to
+// alpha^2 / (lambda + mu) for the free ring's uniform mode) against the local step's curvature
+// D + q. Where M >= D + q the step's energy is concave along the mode: the point has no
+// equilibrium inside its interval and snaps to its end, but DC reaches that end only by steps
+// that grow by M / (D + q) per iteration, about 1.003 on the life scene's free ring (a = 2625,
+// q 60 times D): thousands of iterations. A point whose last two DC increments have the same sign
+// and do not shrink (|d1| >= |d0| > 0: the DC map's slope >= 1 along its motion, energy concave
+// there) is moved at once to the end of its interval in that direction: 1 (growing above its held
+// fraction), its held fraction (moving towards it), 0 (shrinking below it); held = |start| if
+// start has the sign of chi, else 0 (phase_fraction's band). Each point at most once per DC solve
+// (snapped: 0/1 per point, in/out), so a wrong move costs iterations, never a cycle: the next
+// local step projects it back. s = alpha chi where moved. Returns the number of points moved.
+inline std::size_t snap_unstable_fractions(span<const double> before2, span<const double> before,
+                                           span<const double> start, span<const double> alpha,
+                                           span<double> snapped, span<double> chi, span<double> s) {
+  const std::size_t n = chi.size();
+  if (before2.size() != n || before.size() != n || start.size() != n || alpha.size() != n ||
+      snapped.size() != n || s.size() != n)
+    throw std::invalid_argument("snap_unstable_fractions: arrays of different lengths");
+  std::size_t moved = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (snapped[i] != 0) continue;
+    const double d0 = before[i] - before2[i], d1 = chi[i] - before[i];
+    if (!(d0 != 0.0 && d0 * d1 > 0.0 && std::fabs(d1) >= std::fabs(d0))) continue;
+    const double sign = chi[i] > 0 ? 1.0 : chi[i] < 0 ? -1.0 : (before[i] < 0 ? -1.0 : 1.0);
+    if (before[i] * sign < 0) continue;  // a change of variant: not a motion along one interval
+    const double f = std::fabs(chi[i]), grows = f - std::fabs(before[i]);
+    if (grows == 0.0) continue;
+    const double held = start[i] * sign > 0 ? std::fabs(start[i]) : 0.0;
+    const double end = grows > 0 ? (f < held ? held : 1.0) : (f > held ? held : 0.0);
+    if (end == f) continue;
+    chi[i] = end == 0.0 ? 0.0 : sign * end;
+    s[i] = alpha[i] * chi[i];
+    snapped[i] = 1;
+    ++moved;
+  }
+  return moved;
+}
+
 // Reversals of one time step: a point whose martensite fraction |chi| grew by more than tol over
 // the step although it has lost fraction in an earlier step (it returns to martensite after
 // turning back towards austenite: the chatter of the on/off scheme when heated). `reverted` (0/1

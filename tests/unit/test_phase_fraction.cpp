@@ -223,3 +223,76 @@ TEST(PhaseFractionDissipation, LocalEnergyIsTheConvexEnvelopeAndThePapersAtZero)
   // c + k < 0: g is concave on each side: the envelope is the chord through chi = -1, 1.
   EXPECT_NEAR(sma::dissipative_local_energy(0.0, alpha, -2e6, 5e5, 0.0, 0.0), -2e6 + 5e5, 1e-6);
 }
+
+// The DC loop's move along an unstable mode (snap_unstable_fractions, edp/solvers/dc.idp).
+TEST(PhaseFractionSnap, MovesRunawayPointsToTheEndOfTheirInterval) {
+  // Points: 0 grows above its held 0.2 (increments 0.01, 0.02) -> 1; 1 shrinks towards its held
+  // 0.2 from above -> 0.2; 2 shrinks below held 0 (variant 2, chi < 0) -> 0; 3 grows below its held
+  // 0.5 -> 0.5; 4 converges (increments 0.02, 0.01): untouched; 5 changes direction: untouched;
+  // 6 was moved already in this solve: untouched; 7 changes variant: untouched.
+  std::vector<double> before2 = {0.21, 0.60, -0.50, 0.10, 0.30, 0.30, 0.10, 0.02};
+  std::vector<double> before = {0.22, 0.58, -0.48, 0.11, 0.32, 0.32, 0.11, 0.01};
+  std::vector<double> chi = {0.24, 0.55, -0.45, 0.13, 0.33, 0.31, 0.13, -0.01};
+  const std::vector<double> start = {0.2, 0.2, -0.6, 0.5, 0.0, 0.0, 0.0, 0.0};
+  const std::vector<double> alpha(8, 2e8);
+  std::vector<double> snapped = {0, 0, 0, 0, 0, 0, 1, 0}, s(8);
+  for (int i = 0; i < 8; ++i) s[i] = alpha[i] * chi[i];
+  const std::vector<double> expected = {1.0, 0.2, 0.0, 0.5, 0.33, 0.31, 0.13, -0.01};
+  EXPECT_EQ(sma::snap_unstable_fractions(before2, before, start, alpha, snapped, chi, s), 4u);
+  for (int i = 0; i < 8; ++i) {
+    EXPECT_EQ(chi[i], expected[i]) << "point " << i;
+    EXPECT_EQ(s[i], alpha[i] * chi[i]) << "point " << i;
+  }
+  EXPECT_EQ(snapped, (std::vector<double>{1, 1, 1, 1, 0, 0, 1, 0}));
+  // Each point at most once per solve: a second call moves nothing.
+  EXPECT_EQ(sma::snap_unstable_fractions(before2, before, start, alpha, snapped, chi, s), 0u);
+  std::vector<double> shorter(7);
+  EXPECT_THROW(sma::snap_unstable_fractions(before2, before, start, alpha, snapped, shorter, s),
+               std::invalid_argument);
+}
+
+// One point in the DC loop: the global step returns its trace t = t0 + (M / alpha) chi (its own
+// mechanical response M, Pa per unit fraction), the local step is project_fraction. The step's
+// energy along chi has curvature D + q - M.
+namespace {
+int dc_iterations(double M, bool snap, double& chi_out) {
+  const double T = 205.0, alpha = kLaw.alpha(T), c = kLaw.c(T), k = 1e6, laminate = 114.4e9;
+  const double t0 = (c + k + 1e1) / alpha;  // just past the forward threshold at chi = 0
+  std::vector<double> hist = {0.0, 0.0}, chi = {0.0}, s = {0.0}, snapped = {0.0};
+  const std::vector<double> start = {0.0}, a = {alpha};
+  for (int it = 0; it < 100000; ++it) {
+    const double t = t0 + M / alpha * chi[0];
+    const double next = sma::project_fraction(kLaw, t, alpha, c, kKappa, 0.0, chi[0], 0.0, laminate, k);
+    const bool still = std::fabs(next - chi[0]) <= 1e-15;
+    chi[0] = next;
+    if (snap && it >= 10) {
+      const std::vector<double> b2 = {hist[0]}, b1 = {hist[1]};
+      sma::snap_unstable_fractions(b2, b1, start, a, snapped, chi, s);
+    }
+    hist = {hist[1], chi[0]};
+    if (still) { chi_out = chi[0]; return it + 1; }
+  }
+  chi_out = chi[0];
+  return -1;
+}
+}  // namespace
+
+TEST(PhaseFractionSnap, AConcaveModeEndsAtItsBoundInAFewIterations) {
+  const double T = 205.0, alpha = kLaw.alpha(T), laminate = 114.4e9, q = alpha * alpha / laminate;
+  // D grows with |t| (rho a |t| kappa); |t| stays below 5e-3 here: M above D + q all the way.
+  const double D = sma::enthalpy_stiffness(kLaw, 5e-3, alpha, kKappa);
+  // Unstable (M = 1.02 (D + q)): the plain DC loop crawls to chi = 1, the moved one jumps there.
+  double plain = 0, snapped = 0;
+  const int crawl = dc_iterations(1.02 * (D + q), false, plain);
+  const int fast = dc_iterations(1.02 * (D + q), true, snapped);
+  EXPECT_EQ(plain, 1.0);
+  EXPECT_EQ(snapped, 1.0);
+  EXPECT_GT(crawl, 200);
+  EXPECT_LE(fast, 13);
+  // Stable (M = 0.5 (D + q)): increments shrink, nothing moves: the same iterates bit for bit.
+  double a = 0, b = 0;
+  EXPECT_EQ(dc_iterations(0.5 * (D + q), false, a), dc_iterations(0.5 * (D + q), true, b));
+  EXPECT_EQ(a, b);
+  EXPECT_GT(a, 0.0);
+  EXPECT_LT(a, 1.0);
+}
