@@ -298,8 +298,8 @@ def main():
 
     # 4. Bad inputs name the option.
     bad_cases = [
-        (["edp/scenes/sleeve-radial.edp", "-pipeE", "-1"], "error: sleeve-radial: -pipeE -1 must be in (0, 1e15] Pa"),
-        (["edp/scenes/sleeve-radial.edp", "-pipeE", "2e15"], "error: sleeve-radial: -pipeE 2e+15 must be in (0, 1e15] Pa"),
+        (["edp/scenes/sleeve-radial.edp", "-pipeE", "-1"], "error: sleeve-radial: -pipeE -1 must be in [1e-15, 1e15] Pa"),
+        (["edp/scenes/sleeve-radial.edp", "-pipeE", "2e15"], "error: sleeve-radial: -pipeE 2e+15 must be in [1e-15, 1e15] Pa"),
         (["edp/scenes/sleeve-radial.edp", "-pipeE", "2e11", "-pipenu", "0.5"],
          "error: sleeve-radial: -pipenu 0.5 must be in (-1, 0.5)"),
         (["edp/scenes/sleeve-radial.edp", "-pipeE", "2e11", "-pipeRi", "0.0505"],
