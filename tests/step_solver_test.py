@@ -121,6 +121,19 @@ def main():
                        ["step solver", "newton", "did not converge", "-stepmaxit"], steps="600")
     check(ok, f"-stepmaxit 1 -stepfallback 0 fails naming the loop: {line}")
     figures["fallback"] = {"fallback_steps": sforced["step_fallbacks"], "pressure_l1_transient": ef["l1_transient"]}
+    # An unstable block that pins one point per active-set round: at a = 2875 the paper's elliptic
+    # pipe with friction met a 35-point block at step 599 that 12 rounds left creeping (the residual
+    # 1.5 % lower an iteration) and that the nested loops could not solve either (1000 fixed-point
+    # iterations); once a curvature move stalls, the step's later iterations take 48 rounds.
+    stall = run_scene("sleeve-elliptic-friction", "step-solver-unstable-block", "-scale", "paper", "-quiet", "1",
+                      "-vtkevery", "0", "-a", "2875", "-Ri", "0.05", "-pipeA", "0.0504", "-pipeB", "0.0505",
+                      "-stepfallback", "0")
+    sstall = json.load(open(os.path.join(stall, "summary.json")))
+    check(sstall["step_fallbacks"] == 0 and sstall["unconverged_loops"] == 0
+          and sstall["step_residual_max"] <= sstall["step_tol"],
+          f"elliptic friction at a = 2875: every step solved by newton alone (residual at most "
+          f"{sstall['step_residual_max']:.1e} <= {sstall['step_tol']:.0e}; {sstall['step_products']} products)")
+    figures["unstable_block"] = {"products": sstall["step_products"], "residual_max": sstall["step_residual_max"]}
     # Where newton does not apply.
     variant = os.path.join(TEST_RESULTS, "step-solver-variant")
     subprocess.run([os.path.join(ROOT, "tools", "ff"), "edp/variants/sleeve-asymmetric-law.edp", "-out", variant,

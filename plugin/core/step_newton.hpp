@@ -106,6 +106,10 @@ struct StepSettings {
   int gmres_maxit = 300;
   double forcing = 0.1;  // the largest relative accuracy asked of GMRES (inexact Newton's forcing term)
   int pdas_rounds = 12;
+  // Active-set rounds once a negative-curvature move has failed to halve the residual: an unstable
+  // block then pins its points one per round, and 12 rounds left a 35-point block creeping (a
+  // 1.5 % fall of the residual an iteration, elliptic-friction at a = 2875, step 599).
+  int pdas_rounds_stalled = 48;
   bool saddle_newton = true;  // Newton moves to a stationary point that is not a minimum of W (solve)
   int stall = 10;  // iterations without halving the residual that stop the step unconverged
   std::FILE* trace = nullptr;  // one line per iteration there when set (the glue: SMA_STEP_TRACE=1)
@@ -331,6 +335,7 @@ class StepSolver {
     // the paper's scale such steps crept for their whole 50 iterations).
     double mark = s.residual_norm;
     int marked = 0;
+    int rounds = set.pdas_rounds;  // raised for the rest of the step once a curvature move stalls
     while (s.residual_norm > set.tol && stats_.iterations < set.maxit) {
       if (stats_.iterations - marked >= set.stall) {
         stats_.failure = "the residual did not halve in " + std::to_string(set.stall) + " iterations";
@@ -345,7 +350,8 @@ class StepSolver {
         region.hi[i] = std::min(cl.hi[i], beta[i] + radius);
       }
       Eigen::VectorXd d;
-      Move tried = newton_direction(s, beta, region, set, d, set.saddle_newton);
+      const double before = s.residual_norm;
+      Move tried = newton_direction(s, beta, region, set, d, set.saddle_newton, rounds);
       Search found;
       if (tried == SaddleNewton) {
         // The step's solution is a stationary point of W that is not a minimum (W falls along a
@@ -355,7 +361,7 @@ class StepSolver {
         // energy's moves are tried otherwise.
         found = try_move(s, beta, region, d, set.tol, best, true, false);
         if (found.ok) ++stats_.saddle_steps;
-        else tried = newton_direction(s, beta, region, set, d, false);
+        else tried = newton_direction(s, beta, region, set, d, false, rounds);
       }
       if (!found.ok && tried != Gradient) {
         if (tried == NegativeCurvature) ++stats_.curvature_steps;
@@ -382,6 +388,7 @@ class StepSolver {
       }
       s = std::move(found.state);
       switch_variants(s);
+      if (tried == NegativeCurvature && !(s.residual_norm <= 0.5 * before)) rounds = std::max(rounds, set.pdas_rounds_stalled);
       best = std::min(best, s.residual_norm);
       if (s.residual_norm <= 0.5 * mark) mark = s.residual_norm, marked = stats_.iterations;
       if (set.trace) {
@@ -635,7 +642,7 @@ class StepSolver {
   // NegativeCurvature: they ran out on an unstable block and d is a descent direction; Gradient
   // otherwise.
   Move newton_direction(const StepState& s, const Eigen::VectorXd& beta, const Classified& cl,
-                        const StepSettings& set, Eigen::VectorXd& d, bool allow_saddle) {
+                        const StepSettings& set, Eigen::VectorXd& d, bool allow_saddle, int rounds) {
     const Eigen::Index n = beta.size();
     d = Eigen::VectorXd::Zero(n);
     std::vector<char> pinned((std::size_t)n, 0);
@@ -652,7 +659,7 @@ class StepSolver {
     double first_rhs = 0;
     bool stable = false, saddle = false;
     Eigen::VectorXd model = cl.force;
-    for (int round = 0; round < set.pdas_rounds; ++round) {
+    for (int round = 0; round < rounds; ++round) {
       std::vector<Eigen::Index> sub;
       for (Eigen::Index i = 0; i < n; ++i)
         if (cl.free[(std::size_t)i] && !pinned[(std::size_t)i]) sub.push_back(i);
