@@ -91,3 +91,25 @@ def save(fig, name):
     fig.tight_layout()
     save_png(fig, os.path.join(PNG_DIR, name), 110)
     return f"benchmarks/{name}"
+
+
+def run_alone(name, measure, section):
+    """A section run as its own script (`tools/bench/<name>.py [--quick]`): measure(out, quick) into
+    results/bench-<name>/, its record written there as summary.json (temporary name, renamed), its
+    figures saved beside it and its part of docs/benchmarks.md printed; returns the record."""
+    out = os.path.join(ROOT, "results", f"bench-{name}")
+    record = measure(out, QUICK)
+    os.makedirs(out, exist_ok=True)
+    with open(os.path.join(out, "summary.json.partial"), "w") as f:
+        json.dump(record, f, indent=2, allow_nan=False)
+    os.replace(os.path.join(out, "summary.json.partial"), os.path.join(out, "summary.json"))
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    def save_here(fig, png):
+        fig.tight_layout()
+        save_png(fig, os.path.join(out, png), 110)
+        return os.path.join(out, png)
+    print("\n".join(section(record, plt, save_here)))
+    return record

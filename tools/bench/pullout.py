@@ -132,19 +132,5 @@ def section(rec, plt, save):
 
 
 if __name__ == "__main__":
-    out = os.path.join(ROOT, "results", "bench-pullout")
-    record = measure(out, "--quick" in sys.argv)
-    os.makedirs(out, exist_ok=True)
-    with open(os.path.join(out, "summary.json.partial"), "w") as f:
-        json.dump(record, f, indent=2, allow_nan=False)
-    os.replace(os.path.join(out, "summary.json.partial"), os.path.join(out, "summary.json"))
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    def save_here(fig, name):
-        fig.tight_layout()
-        fig.savefig(os.path.join(out, name), dpi=110)
-        plt.close(fig)
-        return name
-    print("\n".join(section(record, plt, save_here)))
+    from common import run_alone
+    run_alone("pullout", measure, section)

@@ -35,6 +35,8 @@ import subprocess
 import sys
 import time
 
+from common import run_alone
+
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 SCENE = "edp/scenes/sleeve-circular.edp"
 
@@ -367,24 +369,7 @@ def section(rec, plt, save):
 
 
 def main():
-    quick = "--quick" in sys.argv
-    out = os.path.join(ROOT, "results", "bench-scaling")
-    rec = scaling(out, quick)
-    os.makedirs(out, exist_ok=True)
-    with open(os.path.join(out, "summary.json.partial"), "w") as f:
-        json.dump(rec, f, indent=2, allow_nan=False)
-    os.replace(os.path.join(out, "summary.json.partial"), os.path.join(out, "summary.json"))
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    def save(fig, name):
-        fig.tight_layout()
-        path = os.path.join(out, name)
-        fig.savefig(path, dpi=110)
-        plt.close(fig)
-        return path
-    print("\n".join(section(rec, plt, save)))
+    rec = run_alone("scaling", scaling, section)
     for text, value, ok in goals(rec):
         print(f"goal: {text}: {value}: {'met' if ok else 'not met'}")
 
