@@ -500,7 +500,10 @@ class StepSolver {
     if (!res.converged)
       throw std::runtime_error("contact: PSOR (condensed) did not converge: " + std::to_string(res.iterations) +
                                " sweeps, relative change " + std::to_string(res.residual) + " > tol " +
-                               std::to_string(p_.psor.tol) + " (raise -psormaxit or check omega)");
+                               std::to_string(p_.psor.tol) +
+                               (p_.psor.polish == 0 ? " (plain PSOR, -psorpolish 0: an ill-conditioned contact problem needs "
+                                                      "the active-set polish, -psorpolish 10; or raise -psormaxit)"
+                                                    : " (raise -psormaxit or check omega)"));
   }
 
   // g = mu r_n (0 where the tangential motion is blocked); the relative change, as contact.idp's
