@@ -23,7 +23,7 @@ the cores). Writes DIR (default results/sweeps/<scene>-<param>):
                        within 0.1 % share a legend entry that says so. Other scenes: the table only
                        (said on the console and in sweep.json)
   design-chart.png     a sweep of sleeve-life (one parameter, numeric values): the clamping pressure,
-                       the service minimum and the pressure at the coldest service temperature (MPa)
+                       the service minimum and the pressure after the hold at -serviceTmin (MPa)
                        and the storage margin (K) against the parameter, -minpressure marked
   sweep.json           the scene, the parameter, the values, the other options, each run's folder
                        and status

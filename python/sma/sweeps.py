@@ -51,7 +51,9 @@ KEY_FIGURES = [("first_contact_step", "first_contact_step"), ("first_contact_tim
                ("installation_clearance", "installation_clearance_m"), ("clamp_pressure", "clamp_pressure_Pa"),
                ("service_pressure_min", "service_pressure_min_Pa"),
                ("pressure_at_service_Tmin", "pressure_at_service_Tmin_Pa"),
-               ("service_T_inner_min", "service_T_inner_min_K"),
+               ("T_inner_at_service_Tmin", "T_inner_at_service_Tmin_K"), ("service_T_inner_min", "service_T_inner_min_K"),
+               ("service_onset_T_inner", "service_onset_T_inner_K"),
+               ("service_transformation_time", "service_transformation_time_s"),
                ("service_window_T_low", "service_window_T_low_K"), ("service_window_T_high", "service_window_T_high_K"),
                ("cycle_periodicity", "cycle_periodicity_Pa")]
 TRAILING_FIGURES = [("unconverged_loops", "unconverged_loops"), ("wall_seconds", "wall_s")]
@@ -300,7 +302,7 @@ def draw(out, scene, param, values, runs, plt, unit="", fixed=None):
 
 # The coupling's life (sleeve-life): its design figures against the swept parameter.
 DESIGN_PRESSURES = [("clamp_pressure", "clamping (end of heating)"), ("service_pressure_min", "service minimum"),
-                    ("pressure_at_service_Tmin", "at the coldest service temperature")]
+                    ("pressure_at_service_Tmin", "after the hold at the lowest service temperature")]
 
 
 def design_chart(out, scene, param, values, runs, plt, unit="", fixed=None):
