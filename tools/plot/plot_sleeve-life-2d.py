@@ -48,6 +48,7 @@ def pressure_points(outdir, summary, h, pts):
     ax.set_ylabel("contact pressure (MPa)")
     ax.legend(fontsize=7, loc="lower right")
     axes[1].plot(t, h["pressure_non_uniformity"][first:], color="k", lw=1.0)
+    axes[1].set_yscale("symlog", linthresh=1e-3)  # 1e-3 on the ellipse, tens at first contact
     axes[1].set_ylabel("(max - min) / mean")
     axes[1].set_xlabel("time (s)")
     for stage, a, b in life_radial.runs_of(h["stage"][first:]):
