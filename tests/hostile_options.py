@@ -99,6 +99,8 @@ def main():
             base = ["-steps", "2"] if "-steps" in names else []
             if name == "sleeve-life":  # its programme sets the steps: a coarse ring, 1 s steps, 1 cycle
                 base = ["-nr", "20", "-dt", "1", "-cycles", "1"]
+            if name == "sleeve-life-2d":  # the same on the 2D model's coarse ring
+                base = ["-mesh", "meshes/sleeve-coarse.msh", "-dt", "1", "-cycles", "1"]
             words_done = set()
             for option, kind, default, _ in rows:
                 if option == "-out":  # tried by hand in a scratch copy: '..' would be the parent

@@ -55,7 +55,12 @@ KEY_FIGURES = [("first_contact_step", "first_contact_step"), ("first_contact_tim
                ("service_onset_T_inner", "service_onset_T_inner_K"),
                ("service_transformation_time", "service_transformation_time_s"),
                ("service_window_T_low", "service_window_T_low_K"), ("service_window_T_high", "service_window_T_high_K"),
-               ("cycle_periodicity", "cycle_periodicity_Pa")]
+               ("cycle_periodicity", "cycle_periodicity_Pa"),
+               # the life on the 2D model (sleeve-life-2d): where the pipe's shape makes the pressure uneven
+               ("installation_clearance_angle_deg", "installation_clearance_angle_deg"),
+               ("clamp_non_uniformity", "clamp_non_uniformity"),
+               ("service_pressure_node_min", "service_pressure_node_min_Pa"),
+               ("service_pressure_node_min_angle_deg", "service_pressure_node_min_angle_deg")]
 TRAILING_FIGURES = [("unconverged_loops", "unconverged_loops"), ("wall_seconds", "wall_s")]
 STEP_TIMES = {"first_contact_time": "first_contact_step", "austenite_time": "austenite_step"}
 COINCIDE = 1e-3  # relative to a curve's largest |pressure|: curves closer share a legend entry
