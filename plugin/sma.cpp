@@ -503,7 +503,9 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
     p.slip_maxit = (int)lrint((*settings)[17]);
     p.dissipation = (*settings)[18];
     p.dissipation_scale = (*settings)[19];
-    const long n = chi->N(), nodes = p.heat->size(), dofs = p.stiffness->size(), m = table->N();
+    // m contact nodes: contact's length / 4 (a scene without contact passes none, and its table
+    // is not read).
+    const long n = chi->N(), nodes = p.heat->size(), dofs = p.stiffness->size(), m = contact->N() / 4;
     if (data->N() != 5 * n + 2 * nodes + 2 * dofs)
       throw std::invalid_argument("data must hold 5 arrays of " + std::to_string(n) + " points, 2 of " +
                                   std::to_string(nodes) + " heat nodes and 2 of " + std::to_string(dofs) +
@@ -517,8 +519,10 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
     p.heat_mask = Segment(data, 5 * n + nodes, nodes, "data");
     p.force = Segment(data, 5 * n + 2 * nodes, dofs, "data");
     p.free = Segment(data, 5 * n + 2 * nodes + dofs, dofs, "data");
-    if (m > 0 && table->M() != 6) throw std::invalid_argument("the contact table must have 6 columns");
-    if (contact->N() != 4 * m) throw std::invalid_argument("contact must hold tangentFree, mu and r of " + std::to_string(m) + " nodes");
+    if (m > 0 && (table->M() != 6 || table->N() != m))
+      throw std::invalid_argument("the contact table must have 6 columns and a row per contact node (" +
+                                  std::to_string(m) + ", from contact's length)");
+    if (contact->N() != 4 * m) throw std::invalid_argument("contact must hold tangentFree, mu and r: 4 values per node");
     if (stats->N() != 12) throw std::invalid_argument("stats must have 12 entries");
     p.gap.resize(m);
     p.slip_reference.resize(m);
