@@ -467,7 +467,7 @@ Eigen::VectorXd Segment(KN<double>* a, long start, long length, const char* what
 
 // One time step of the fraction model (plugin/core/step_newton.hpp). settings = [operator slot,
 // heat factor slot, stiffness factor slot, rho, a, L, T0, Tc, laminate, rho L / dt, tol, maxit,
-// omega, psor tol, psor maxit, polish, slip tol, slip maxit]; data = [area; kappa; threshold
+// omega, psor tol, psor maxit, polish, slip tol, slip maxit, dissipation k, k / dt]; data = [area; kappa; threshold
 // offset; chi at the step's start; b_start] (n points each), [heat right side without the
 // latent load; free-node mask] (per heat node), [load f; free-dof mask] (per dof) in one array
 // (FreeFEM's plugin functions take at most 8 arguments); table = contact.idp's contactTable
@@ -478,7 +478,7 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
                        KN<double>* const& contact, KN<double>* const& chi, KN<double>* const& T,
                        KN<double>* const& u, KN<double>* const& stats) {
   return guarded("StepSolveFraction", [&] {
-    if (settings->N() != 18) throw std::invalid_argument("settings must have 18 values");
+    if (settings->N() != 20) throw std::invalid_argument("settings must have 20 values");
     const long slot = lrint((*settings)[0]);
     if (slot < 0 || slot >= (long)StepSlots().size())
       throw std::invalid_argument("no step operators in slot " + std::to_string(slot) + " (StepOperatorsSet first)");
@@ -501,7 +501,11 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
     p.psor.polish = (int)lrint((*settings)[15]);
     p.slip_tol = (*settings)[16];
     p.slip_maxit = (int)lrint((*settings)[17]);
-    const long n = chi->N(), nodes = p.heat->size(), dofs = p.stiffness->size(), m = table->N();
+    p.dissipation = (*settings)[18];
+    p.dissipation_scale = (*settings)[19];
+    // m contact nodes: contact's length / 4 (a scene without contact passes none, and its table
+    // is not read).
+    const long n = chi->N(), nodes = p.heat->size(), dofs = p.stiffness->size(), m = contact->N() / 4;
     if (data->N() != 5 * n + 2 * nodes + 2 * dofs)
       throw std::invalid_argument("data must hold 5 arrays of " + std::to_string(n) + " points, 2 of " +
                                   std::to_string(nodes) + " heat nodes and 2 of " + std::to_string(dofs) +
@@ -515,8 +519,10 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
     p.heat_mask = Segment(data, 5 * n + nodes, nodes, "data");
     p.force = Segment(data, 5 * n + 2 * nodes, dofs, "data");
     p.free = Segment(data, 5 * n + 2 * nodes + dofs, dofs, "data");
-    if (m > 0 && table->M() != 6) throw std::invalid_argument("the contact table must have 6 columns");
-    if (contact->N() != 4 * m) throw std::invalid_argument("contact must hold tangentFree, mu and r of " + std::to_string(m) + " nodes");
+    if (m > 0 && (table->M() != 6 || table->N() != m))
+      throw std::invalid_argument("the contact table must have 6 columns and a row per contact node (" +
+                                  std::to_string(m) + ", from contact's length)");
+    if (contact->N() != 4 * m) throw std::invalid_argument("contact must hold tangentFree, mu and r: 4 values per node");
     if (stats->N() != 12) throw std::invalid_argument("stats must have 12 entries");
     p.gap.resize(m);
     p.slip_reference.resize(m);
@@ -596,7 +602,7 @@ long RoundToFloat(KN<double>* const& x) {
   return changed;
 }
 
-double SmaPluginVersion() { return 11.0; }
+double SmaPluginVersion() { return 12.0; }
 
 // FreeFEM's time() has a resolution of one second and clock() counts CPU time; timings of the
 // scenes are wall-clock seconds from a monotonic clock.

@@ -13,7 +13,7 @@
 //   beta = clamp(clamp(held, drive / q, drive / q + 1), 0, 1),     held = the fraction at the
 //   step's start (of this variant),
 // which is the fixed point the nested loops of dct.idp converge to (their enthalpy regularisation
-// vanishes there). Stopping criterion: the residual F = chi - sign(tr e) beta_target, in
+// vanishes there); with the dissipation k the band widens by k / q on each side (target()). Stopping criterion: the residual F = chi - sign(tr e) beta_target, in
 // fraction units, max_i |F_i| <= tol, each evaluation solving the heat exactly (a back-solve)
 // and the contact problem to its PSOR and slip-threshold tolerances.
 //
@@ -25,8 +25,12 @@
 //   W(beta) = Pi(alpha beta) + sum_i area_i (c_i beta_i + q_i beta_i^2 / 2 + psi_i(beta_i - held_i))
 //             + (rho L / T0) / 2 beta' A Interp H^-1 latent beta
 // (Pi the contact-mechanical energy, concave in the eigenstress: the paper's DC structure;
-// psi_i(x) = q_i max(-x, 0) the laminate's dissipation; the heat quadratic convex), with
-// -dW/dbeta_i = area_i f_i, f = drive - q beta (+ q on the reverting side of held). Each iteration:
+// psi_i(x) = q_i max(-x, 0) + k |x| the laminate's dissipation and the dissipative law's, k in
+// Pa, 0 for the paper's law; the heat quadratic convex), with -dW/dbeta_i = area_i f_i,
+// f = drive - q beta - k (+ q + 2 k on the reverting side of held). With k the heat also receives
+// the dissipated heat k |chi - chi_start| / dt (the nested loops' source): its feedback on the
+// drive is not a gradient (a relative asymmetry of about k / (rho L) in the Jacobian), which
+// GMRES and the moves' acceptance tests below do not need. Each iteration:
 //   1. classify the points: free in their interval [0, held] or [held, 1], or bound at 0, held,
 //      1 when the force pushes them outward; the intervals are cut to a trust region;
 //   2. Newton on the free points: (-df/dbeta)_FF d_F = f_F, by GMRES on the exact linearisation
@@ -96,6 +100,9 @@ struct StepProblem {
   double laminate = 0.0;
   Eigen::VectorXd threshold_offset;
   Eigen::VectorXd kappa;  // K per unit fraction (the gradient step's preconditioner)
+  // The dissipative law (docs/model.md, "A dissipative law"): k (Pa) and k / dt, the dissipated
+  // heat's source per unit fraction moved (0: the paper's law, the same arithmetic).
+  double dissipation = 0.0, dissipation_scale = 0.0;
   // The step's start: chi (the held fractions) and the fractions its heat load starts from.
   Eigen::VectorXd chi_start, b_start;
 };
@@ -112,6 +119,10 @@ struct StepSettings {
   int pdas_rounds_stalled = 48;
   bool saddle_newton = true;  // Newton moves to a stationary point that is not a minimum of W (solve)
   int stall = 10;  // iterations without halving the residual that stop the step unconverged
+  // The same with the dissipation k > 0: the free ring's first transforming step (its uniform
+  // mode snapping, k = 5e5 Pa, 2 s steps) crept 11 iterations at about 1e-2 and then converged
+  // at iteration 14; the paper's law keeps 10 (its steps' fall-backs unchanged).
+  int stall_dissipative = 20;
   std::FILE* trace = nullptr;  // one line per iteration there when set (the glue: SMA_STEP_TRACE=1)
 };
 
@@ -251,6 +262,8 @@ class StepSolver {
     const Eigen::VectorXd beta = chi.cwiseAbs();
     // Heat.
     Eigen::VectorXd rhs = p_.heat_rhs + p_.heat_mask.cwiseProduct(p_.latent_scale * (p_.latent * (beta - p_.b_start)));
+    if (p_.dissipation > 0)  // the dissipated heat k |chi - chi_start| / dt, a source beside the latent heat
+      rhs += p_.heat_mask.cwiseProduct(p_.dissipation_scale * (p_.latent * (chi - p_.chi_start).cwiseAbs()));
     s.T.resize(rhs.size());
     heat_solve(rhs, s.T);
     const Eigen::VectorXd Tq = p_.interp * s.T;
@@ -278,28 +291,39 @@ class StepSolver {
       s.sign[i] = t > 0 ? 1.0 : t < 0 ? -1.0 : (chi[i] < 0 ? -1.0 : 1.0);
       s.held[i] = std::max(p_.chi_start[i] * s.sign[i], 0.0);
       s.drive[i] = s.alpha[i] * std::fabs(t) - s.c[i];
-      s.residual[i] = chi[i] - s.sign[i] * target(s, i);
+      s.residual[i] = chi[i] - s.sign[i] * target(s, i, p_.dissipation);
     }
     s.residual_norm = n ? s.residual.lpNorm<Eigen::Infinity>() : 0.0;
     return s;
   }
 
-  // The fraction magnitude Frémond's law with the laminate band gives point i at state s.
-  static double target(const StepState& s, Eigen::Index i) {
+  // The fraction magnitude Frémond's law with the laminate band gives point i at state s; with
+  // the dissipation k (Pa) the band widens by k / q on each side: a fraction grows only when its
+  // drive passes q beta + k, shrinks only below q (beta - 1) - k (phase_fraction.hpp's local step
+  // at its fixed point b = |chi|, whatever D).
+  static double target(const StepState& s, Eigen::Index i, double k = 0.0) {
     const double q = s.q[i], drive = s.drive[i], held = s.held[i];
-    if (!(q > 0)) return drive > 0 ? 1.0 : drive < 0 ? 0.0 : held;
-    const double lower = drive / q;
-    return std::clamp(std::clamp(held, lower, lower + 1.0), 0.0, 1.0);
+    if (!(q > 0)) return drive > k ? 1.0 : drive < -k ? 0.0 : held;
+    const double lower = (drive - k) / q, upper = (drive + k) / q + 1.0;
+    return std::clamp(std::clamp(held, lower, upper), 0.0, 1.0);
   }
 
-  // d f / d beta along w at state s (f = drive - q beta, + q where `upper`): one heat and one
-  // stiffness back-solve, the contact statuses of s frozen.
+  // d f / d beta along w at state s (f = drive - q beta, + q where `upper`; the dissipation's
+  // -+k is constant): one heat and one stiffness back-solve, the contact statuses of s frozen.
+  // With k the dissipated heat k |chi - chi_start| / dt moves by +-k / dt per unit fraction: + on
+  // the growing side of held, - on the reverting side (`upper`).
   Eigen::VectorXd force_derivative(const StepState& s, const Eigen::VectorXd& w,
                                    const std::vector<char>& upper) {
     ++stats_.products;
     const Eigen::Index n = w.size();
     Eigen::VectorXd dT(p_.heat_rhs.size());
-    heat_solve(p_.heat_mask.cwiseProduct(p_.latent_scale * (p_.latent * w)), dT);
+    if (p_.dissipation > 0) {
+      Eigen::VectorXd source = p_.latent_scale * w;
+      for (Eigen::Index i = 0; i < n; ++i) source[i] += (upper[i] ? -p_.dissipation_scale : p_.dissipation_scale) * w[i];
+      heat_solve(p_.heat_mask.cwiseProduct(p_.latent * source), dT);
+    } else {
+      heat_solve(p_.heat_mask.cwiseProduct(p_.latent_scale * (p_.latent * w)), dT);
+    }
     const Eigen::VectorXd dTq = p_.interp * dT;
     Eigen::VectorXd dalpha(n), dc(n), ds(n);
     const double rhoa = p_.law.rho * p_.law.a, latent_slope = p_.law.rho * p_.law.latent / p_.law.T0;
@@ -337,8 +361,9 @@ class StepSolver {
     int marked = 0;
     int rounds = set.pdas_rounds;  // raised for the rest of the step once a curvature move stalls
     while (s.residual_norm > set.tol && stats_.iterations < set.maxit) {
-      if (stats_.iterations - marked >= set.stall) {
-        stats_.failure = "the residual did not halve in " + std::to_string(set.stall) + " iterations";
+      const int stall = p_.dissipation > 0 ? set.stall_dissipative : set.stall;
+      if (stats_.iterations - marked >= stall) {
+        stats_.failure = "the residual did not halve in " + std::to_string(stall) + " iterations";
         break;
       }
       ++stats_.iterations;
@@ -432,6 +457,9 @@ class StepSolver {
     need(p_.kappa.size() == n && p_.chi_start.size() == n && p_.b_start.size() == n, "per-point data of one length");
     need(p_.threshold_offset.size() == 0 || p_.threshold_offset.size() == n, "threshold offset per point (or none)");
     need(p_.laminate > 0, "the laminate modulus lambda + 2 mu must be > 0");
+    need(p_.dissipation >= 0 && std::isfinite(p_.dissipation) && p_.dissipation_scale >= 0 &&
+             std::isfinite(p_.dissipation_scale),
+         "the dissipation k (Pa) and k / dt must be finite and >= 0");
     for (Eigen::Index i = 0; i < n; ++i)
       if (!(p_.area[i] > 0)) throw std::invalid_argument("step: point " + std::to_string(i) + " has no area");
     p_.law.validate();
@@ -589,8 +617,8 @@ class StepSolver {
     for (Eigen::Index i = 0; i < n; ++i) {
       const double q = s.q[i], held = s.held[i], b = beta[i];
       if (!(q > 0)) continue;  // alpha = 0: the law has no free fraction (the target is 0 or 1)
-      const double f = s.drive[i] - q * b;
-      const double right = f + (b < held ? q : 0.0), left = f + (b <= held ? q : 0.0);
+      const double f = s.drive[i] - q * b, k = p_.dissipation;  // k: the force's step at held, each side
+      const double right = f + (b < held ? q + k : -k), left = f + (b <= held ? q + k : -k);
       bool free = false;
       double force = 0, lo = 0, hi = 1;
       if (b <= 0) {
@@ -601,9 +629,9 @@ class StepSolver {
         if (right > 0) free = true, force = right, lo = held, hi = 1;
         else if (left < 0) free = true, force = left, lo = 0, hi = held;
       } else if (b > held) {
-        free = true, force = f, lo = held, hi = 1;
+        free = true, force = f - k, lo = held, hi = 1;
       } else {
-        free = true, force = f + q, lo = 0, hi = held;
+        free = true, force = f + q + k, lo = 0, hi = held;
       }
       cl.free[(std::size_t)i] = free;
       cl.force[i] = force;
@@ -619,6 +647,10 @@ class StepSolver {
   // and the state is evaluated again; repeated while the variants change (at most 5 times).
   // The fraction moves of W cannot express a change of variant: without this, a point whose
   // trace changed sign would keep a residual of 2 |chi|.
+  // With the dissipation k the switch is not weighed against its cost k (|chi| + |chi_start|):
+  // the nested loops' local step (project_fraction) takes the trace's variant unconditionally,
+  // the new one then growing from none (held = 0) only past drive = k, and both solvers solve
+  // the same law; its dissipated heat is counted by evaluate()'s source |chi - chi_start|.
   void switch_variants(StepState& s) {
     for (int pass = 0; pass < 5; ++pass) {
       Eigen::VectorXd chi = s.chi;
@@ -799,10 +831,11 @@ class StepSolver {
     for (Eigen::Index i = 0; i < beta.size(); ++i) {
       const double step = moved[i] - beta[i];
       if (step == 0.0) continue;
-      const double f0 = step > 0 ? s.drive[i] - s.q[i] * beta[i] + (beta[i] < s.held[i] ? s.q[i] : 0.0)
-                                 : s.drive[i] - s.q[i] * beta[i] + (beta[i] <= s.held[i] ? s.q[i] : 0.0);
+      const double k = p_.dissipation;  // psi's slope k|beta - held|: -k above held, +k below
+      const double f0 = step > 0 ? s.drive[i] - s.q[i] * beta[i] + (beta[i] < s.held[i] ? s.q[i] + k : -k)
+                                 : s.drive[i] - s.q[i] * beta[i] + (beta[i] <= s.held[i] ? s.q[i] + k : -k);
       const bool below = moved[i] < s.held[i] || (moved[i] == s.held[i] && step > 0);
-      const double f1 = t.drive[i] - t.q[i] * moved[i] + (below ? t.q[i] : 0.0);
+      const double f1 = t.drive[i] - t.q[i] * moved[i] + (below ? t.q[i] + k : -k);
       change -= 0.5 * p_.area[i] * (f0 + f1) * step;
       predicted -= p_.area[i] * f0 * step;
     }
