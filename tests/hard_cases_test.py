@@ -300,13 +300,13 @@ def slivers(E, nu):
     sig = signorini("sliver-thin", contact_state(out, run), 1e-6 * INTERFERENCE)
     code, msg = run_failing("sleeve-circular", "hard-sliver-degenerate", "-mesh", "meshes/sliver-degenerate.msh",
                             "-quiet", "1", "-steps", "3")
-    m = re.search(r"error: mesh meshes/sliver-degenerate.msh: triangle (\d+) \(centroid (\S+) (\S+)\) has area (\S+) "
+    m = re.search(r"error: mesh meshes/sliver-degenerate.msh \(option -mesh\): triangle (\d+) \(centroid (\S+) (\S+)\) has area (\S+) "
                   r"< 1e-8 \(mean (\S+), quality (\S+)\)", msg)
     check(code != 0 and m is not None, f"layer of quality 9e-6 rejected up front (exit {code}): "
           + (m.group(0) if m else "no message naming the triangle"))
     code2, msg2 = run_failing("sleeve-circular", "hard-sliver-strict", "-mesh", "meshes/sliver-thin.msh",
                               "-quiet", "1", "-steps", "3", "-meshminquality", "0.05")
-    m2 = re.search(r"error: mesh meshes/sliver-thin.msh: triangle (\d+) .* has quality (\S+) < 0.05", msg2)
+    m2 = re.search(r"error: mesh meshes/sliver-thin.msh \(option -mesh\): triangle (\d+) .* has quality (\S+) < 0.05", msg2)
     check(code2 != 0 and m2 is not None and float(m2.group(2)) < 0.05,
           f"-meshminquality 0.05 rejects the thin layer (exit {code2}): " + (m2.group(0) if m2 else "no message"))
     return dict(sig, lame_Pa=lame, final_pressure_Pa=s["final_pressure_mean"], lame_error=err,
