@@ -156,7 +156,10 @@ inline PsorResult psor_condensed(const Eigen::MatrixXd& W, const Eigen::VectorXd
       change = std::max(change, std::fabs(delta));
       size = std::max(size, std::fabs(updated));
     }
-    result.residual = size > 0 ? change / size : change;
+    // Under-relaxed (omega < 1), a sweep moves r by omega times the Gauss-Seidel step: the change
+    // is measured per unit relaxation, else a small omega stops at once on a change that only
+    // looks small (-omega 1e-300: "converged" on the warm start). omega >= 1: the change itself.
+    result.residual = (size > 0 ? change / size : change) / std::min(omega, 1.0);
     if (result.residual <= tol) {
       result.converged = true;
       break;

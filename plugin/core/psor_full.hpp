@@ -156,7 +156,8 @@ inline PsorResult psor_full(const CsrView& K, span<const double> b, const Contac
       change = std::max({change, std::fabs(dn), std::fabs(dt)});
       size = std::max({size, std::fabs(u[2 * v]), std::fabs(u[2 * v + 1])});
     }
-    result.residual = size > 0 ? change / size : change;
+    // Per unit relaxation below omega = 1 (psor.hpp says why).
+    result.residual = (size > 0 ? change / size : change) / std::min(w, 1.0);
     if (result.residual <= set.tol) {
       result.converged = true;
       break;
