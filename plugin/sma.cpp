@@ -92,6 +92,11 @@
 //   string StreamWriteError(ofstream f)            flushes f; "" if every write so far succeeded
 //   string JsonFileError(string path)              "" if the file is valid JSON, finite numbers
 //   string JsonQuote(string s), string ShellQuote(string s)
+//   long VtuWrite(string path, mesh Th, string vectorName, real[] vector, string scalarName,
+//                 real[] scalar, string cellNames, real[int,int] cells)   a ParaView VTU file in
+//       the bytes of savevtk(path, Th, [vector, 0], scalar, cells' columns, order = [1, 1, 0...],
+//       withsurfacemesh = false) (plugin/core/output.hpp): vector 2 values per vertex, scalar 1,
+//       cells one row per triangle, one column per word of cellNames; 0, or -1 if not written.
 //   string MeshFileError(string path, real minQuality)   "" if gmshload may read the MSH file
 //       (plugin/core/mesh_check.hpp: format, cut off, clockwise, area < 1e-8, quality)
 
@@ -106,6 +111,7 @@
 #include <cstring>
 #include <exception>
 #include <fstream>
+#include <iterator>
 #include <memory>
 #include <new>
 #include <sstream>
@@ -115,6 +121,7 @@
 #include <vector>
 
 #include "core/files.hpp"
+#include "core/output.hpp"
 #include "core/json.hpp"
 #include "core/material.hpp"
 #include "core/mesh_check.hpp"
@@ -596,7 +603,7 @@ long RoundToFloat(KN<double>* const& x) {
   return changed;
 }
 
-double SmaPluginVersion() { return 11.0; }
+double SmaPluginVersion() { return 12.0; }
 
 // FreeFEM's time() has a resolution of one second and clock() counts CPU time; timings of the
 // scenes are wall-clock seconds from a monotonic clock.
@@ -697,6 +704,46 @@ string* JsonFileError(Stack stack, string* const& path) {
 string* MeshFileError(Stack stack, string* const& path, double const& min_quality) {
   return NewString(stack, sma::mesh::check_msh(*path, min_quality));
 }
+// A ParaView VTU file of mesh Th in savevtk's bytes (plugin/core/output.hpp): point fields, a
+// vector (2 values per vertex, interleaved: a [P1, P1] function's array) and a scalar (a P1
+// function's array), and cell fields, the columns of `cells` (one row per triangle: P0 arrays)
+// named by the words of cellNames. Returns 0, or -1 when the file could not be written.
+long VtuWrite(string* const& path, pmesh const& Th, string* const& vectorName, KN<double>* const& vector,
+              string* const& scalarName, KN<double>* const& scalar, string* const& cellNames,
+              KNM<double>* const& cells) {
+  return guarded("VtuWrite", [&] {
+    const Mesh& mesh = *Th;
+    const long nv = mesh.nv, nt = mesh.nt;
+    std::istringstream words(*cellNames);
+    std::vector<std::string> names{std::istream_iterator<std::string>(words), std::istream_iterator<std::string>()};
+    if (vector->N() != 2 * nv || scalar->N() != nv)
+      throw std::invalid_argument("the point fields need 2 and 1 values per vertex (" + std::to_string(nv) + " vertices)");
+    if (cells->N() != nt || cells->M() != (long)names.size())
+      throw std::invalid_argument("the cell fields need one row per triangle (" + std::to_string(nt)
+                                  + ") and one column per name of '" + *cellNames + "'");
+    sma::output::VtuMesh m;
+    m.x.resize(nv); m.y.resize(nv); m.triangles.resize(3 * nt); m.labels.resize(nt);
+    for (long v = 0; v < nv; ++v) { m.x[v] = mesh(v).x; m.y[v] = mesh(v).y; }
+    for (long t = 0; t < nt; ++t) {
+      for (int k = 0; k < 3; ++k) m.triangles[3 * t + k] = mesh(t, k);
+      m.labels[t] = mesh[t].lab;
+    }
+    std::vector<sma::output::VtuField> cellFields, pointFields;
+    for (std::size_t j = 0; j < names.size(); ++j) {
+      sma::output::VtuField f{names[j], 1, std::vector<double>(nt)};
+      for (long t = 0; t < nt; ++t) f.values[t] = (*cells)(t, (long)j);
+      cellFields.push_back(f);
+    }
+    pointFields.push_back({*vectorName, 2, std::vector<double>(&(*vector)[0], &(*vector)[0] + 2 * nv)});
+    pointFields.push_back({*scalarName, 1, std::vector<double>(&(*scalar)[0], &(*scalar)[0] + nv)});
+    const std::string text = sma::output::vtu_file(m, cellFields, pointFields);
+    std::FILE* file = std::fopen(path->c_str(), "wb");
+    if (!file) return -1L;
+    const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size();
+    return (std::fclose(file) == 0 && written) ? 0L : -1L;
+  });
+}
+
 string* JsonQuote(Stack stack, string* const& text) { return NewString(stack, sma::json::quote(*text)); }
 string* ShellQuote(Stack stack, string* const& text) { return NewString(stack, sma::files::shell_quote(*text)); }
 
@@ -754,6 +801,7 @@ static void Load_Init() {
   Global.Add("ResultsRelease", "(", new OneOperator1_<long, S>(ResultsRelease));
   Global.Add("StreamWriteError", "(", new OneOperator1s_<S, std::ostream*>(StreamWriteError));
   Global.Add("JsonFileError", "(", new OneOperator1s_<S, S>(JsonFileError));
+  Global.Add("VtuWrite", "(", new OneOperator8_<long, S, pmesh, S, A, S, A, S, KNM<double>*>(VtuWrite));
   Global.Add("JsonQuote", "(", new OneOperator1s_<S, S>(JsonQuote));
   Global.Add("MeshFileError", "(", new OneOperator2s_<S, S, double>(MeshFileError));
   Global.Add("ShellQuote", "(", new OneOperator1s_<S, S>(ShellQuote));
