@@ -92,6 +92,10 @@
 //   string StreamWriteError(ofstream f)            flushes f; "" if every write so far succeeded
 //   string JsonFileError(string path)              "" if the file is valid JSON, finite numbers
 //   string JsonQuote(string s), string ShellQuote(string s)
+//   long CsvWriteRow(ofstream f, real[] values)   writes the values comma-separated (no line end),
+//       each in the characters f << value would write (f's precision; plugin/core/output.hpp)
+//   long CsvWriteRows(ofstream f, real[int,int] table)   the same for every row of table, each
+//       followed by a line end
 //   long VtuWrite(string path, mesh Th, string vectorName, real[] vector, string scalarName,
 //                 real[] scalar, string cellNames, real[int,int] cells)   a ParaView VTU file in
 //       the bytes of savevtk(path, Th, [vector, 0], scalar, cells' columns, order = [1, 1, 0...],
@@ -744,6 +748,35 @@ long VtuWrite(string* const& path, pmesh const& Th, string* const& vectorName, K
   });
 }
 
+// CSV rows at the stream's precision in the characters `f << x` writes (plugin/core/output.hpp):
+// a row's values comma-separated (no line end), or every row of a table, each ended by a line end.
+int CsvPrecision(std::ostream* f) {
+  if ((f->flags() & std::ios::floatfield) != std::ios::fmtflags(0) || (f->flags() & std::ios::showpoint))
+    throw std::invalid_argument("the stream must print reals in the default format (no fixed, scientific or showpoint)");
+  return static_cast<int>(f->precision());
+}
+long CsvWriteRow(std::ostream* const& f, KN<double>* const& values) {
+  return guarded("CsvWriteRow", [&] {
+    const std::string row = sma::output::csv_row(values->N() ? &(*values)[0] : nullptr, values->N(), CsvPrecision(f));
+    f->write(row.data(), (std::streamsize)row.size());
+    return 0L;
+  });
+}
+long CsvWriteRows(std::ostream* const& f, KNM<double>* const& table) {
+  return guarded("CsvWriteRows", [&] {
+    const int precision = CsvPrecision(f);
+    std::vector<double> row(table->M());
+    std::string text;
+    for (long i = 0; i < table->N(); ++i) {
+      for (long j = 0; j < table->M(); ++j) row[j] = (*table)(i, j);
+      text += sma::output::csv_row(row.data(), row.size(), precision);
+      text += '\n';
+    }
+    f->write(text.data(), (std::streamsize)text.size());
+    return 0L;
+  });
+}
+
 string* JsonQuote(Stack stack, string* const& text) { return NewString(stack, sma::json::quote(*text)); }
 string* ShellQuote(Stack stack, string* const& text) { return NewString(stack, sma::files::shell_quote(*text)); }
 
@@ -802,6 +835,8 @@ static void Load_Init() {
   Global.Add("StreamWriteError", "(", new OneOperator1s_<S, std::ostream*>(StreamWriteError));
   Global.Add("JsonFileError", "(", new OneOperator1s_<S, S>(JsonFileError));
   Global.Add("VtuWrite", "(", new OneOperator8_<long, S, pmesh, S, A, S, A, S, KNM<double>*>(VtuWrite));
+  Global.Add("CsvWriteRow", "(", new OneOperator2_<long, std::ostream*, A>(CsvWriteRow));
+  Global.Add("CsvWriteRows", "(", new OneOperator2_<long, std::ostream*, KNM<double>*>(CsvWriteRows));
   Global.Add("JsonQuote", "(", new OneOperator1s_<S, S>(JsonQuote));
   Global.Add("MeshFileError", "(", new OneOperator2s_<S, S, double>(MeshFileError));
   Global.Add("ShellQuote", "(", new OneOperator1s_<S, S>(ShellQuote));
