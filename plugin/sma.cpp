@@ -92,6 +92,10 @@
 //   string StreamWriteError(ofstream f)            flushes f; "" if every write so far succeeded
 //   string JsonFileError(string path)              "" if the file is valid JSON, finite numbers
 //   string JsonQuote(string s), string ShellQuote(string s)
+//   long PlaneStressAtCentroids(mesh Th, matrix Dx, matrix Dy, real[] u, real[] [lambda, mu],
+//                               real[] sxx, real[] syy, real[] sxy)   the P0 interpolations of
+//       SigmaXX, SigmaYY, SigmaXY (edp/lib/elasticity.idp) of the [P1, P1] array u, to the last bit
+//       (plugin/core/output.hpp); Dx, Dy = interpolate(Ph, Wh, op = 1), op = 2
 //   long CsvWriteRow(ofstream f, real[] values)   writes the values comma-separated (no line end),
 //       each in the characters f << value would write (f's precision; plugin/core/output.hpp)
 //   long CsvWriteRows(ofstream f, real[int,int] table)   the same for every row of table, each
@@ -748,6 +752,37 @@ long VtuWrite(string* const& path, pmesh const& Th, string* const& vectorName, K
   });
 }
 
+// The in-plane stresses of the P1 displacement u per triangle (plugin/core/output.hpp
+// plane_stress_p1): Dx, Dy the P0 <- P1 interpolation matrices of the derivatives
+// (interpolate(Ph, Wh, op = 1) and op = 2: the coefficients FreeFEM's element computes), lame =
+// [lambda, mu]; sxx, syy, sxy receive one value per triangle.
+long PlaneStressAtCentroids(pmesh const& Th, Matrice_Creuse<double>* const& Dx, Matrice_Creuse<double>* const& Dy,
+                            KN<double>* const& u, KN<double>* const& lame, KN<double>* const& sxx,
+                            KN<double>* const& syy, KN<double>* const& sxy) {
+  return guarded("PlaneStressAtCentroids", [&] {
+    const Mesh& mesh = *Th;
+    const long nv = mesh.nv, nt = mesh.nt;
+    if (u->N() != 2 * nv) throw std::invalid_argument("u needs 2 values per vertex");
+    if (lame->N() != 2) throw std::invalid_argument("lame must be [lambda, mu]");
+    const sma::SparseMatrix dx = ToEigen(Dx), dy = ToEigen(Dy);
+    if (dx.rows() != nt || dx.cols() != nv || dy.rows() != nt || dy.cols() != nv)
+      throw std::invalid_argument("Dx and Dy must be triangles x vertices (interpolate(Ph, Wh, op = 1), op = 2)");
+    std::vector<int> triangles(3 * nt);
+    std::vector<double> gx(3 * nt), gy(3 * nt);
+    for (long t = 0; t < nt; ++t)
+      for (int k = 0; k < 3; ++k) {
+        const int v = mesh(t, k);
+        triangles[3 * t + k] = v;
+        gx[3 * t + k] = dx.coeff(t, v);
+        gy[3 * t + k] = dy.coeff(t, v);
+      }
+    sxx->resize(nt); syy->resize(nt); sxy->resize(nt);
+    sma::output::plane_stress_p1(triangles, gx, gy, &(*u)[0], (*lame)[0], (*lame)[1], &(*sxx)[0], &(*syy)[0],
+                                 &(*sxy)[0]);
+    return 0L;
+  });
+}
+
 // CSV rows at the stream's precision in the characters `f << x` writes (plugin/core/output.hpp):
 // a row's values comma-separated (no line end), or every row of a table, each ended by a line end.
 int CsvPrecision(std::ostream* f) {
@@ -835,6 +870,9 @@ static void Load_Init() {
   Global.Add("StreamWriteError", "(", new OneOperator1s_<S, std::ostream*>(StreamWriteError));
   Global.Add("JsonFileError", "(", new OneOperator1s_<S, S>(JsonFileError));
   Global.Add("VtuWrite", "(", new OneOperator8_<long, S, pmesh, S, A, S, A, S, KNM<double>*>(VtuWrite));
+  Global.Add("PlaneStressAtCentroids", "(",
+             new OneOperator8_<long, pmesh, Matrice_Creuse<double>*, Matrice_Creuse<double>*, A, A, A, A, A>(
+                 PlaneStressAtCentroids));
   Global.Add("CsvWriteRow", "(", new OneOperator2_<long, std::ostream*, A>(CsvWriteRow));
   Global.Add("CsvWriteRows", "(", new OneOperator2_<long, std::ostream*, KNM<double>*>(CsvWriteRows));
   Global.Add("JsonQuote", "(", new OneOperator1s_<S, S>(JsonQuote));

@@ -147,3 +147,33 @@ TEST(Output, CsvRowSeparatesByCommasWithoutLineEnd) {
   EXPECT_EQ(out::csv_row(row, 4, 12), "1,0.1,-2.5e-07,1500");
   EXPECT_EQ(out::csv_row(row, 0, 12), "");
 }
+
+// The output fields' stresses: on a linear displacement u = (a x + b y, c x + d y) every triangle
+// has the exact strain (a, d, (b + c) / 2), whatever its shape, with the basis functions'
+// derivatives computed here from the triangles' geometry (grad l_k = perp(opposite edge) / 2 area).
+TEST(Output, PlaneStressOfALinearDisplacementIsHookesLaw) {
+  const std::vector<double> x = {0, 1, 0.2, 1.3}, y = {0, 0.1, 1, 0.9};
+  const std::vector<int> triangles = {0, 1, 2, 1, 3, 2};
+  const double a = 1e-3, b = -2e-4, c = 5e-4, d = 3e-4, lambda = 1.2e11, mu = 0.8e11;
+  std::vector<double> u(8), gx(6), gy(6);
+  for (int v = 0; v < 4; ++v) {
+    u[2 * v] = a * x[v] + b * y[v];
+    u[2 * v + 1] = c * x[v] + d * y[v];
+  }
+  for (int t = 0; t < 2; ++t) {
+    const int* p = &triangles[3 * t];
+    const double area2 = (x[p[1]] - x[p[0]]) * (y[p[2]] - y[p[0]]) - (x[p[2]] - x[p[0]]) * (y[p[1]] - y[p[0]]);
+    for (int k = 0; k < 3; ++k) {
+      const int i = p[(k + 1) % 3], j = p[(k + 2) % 3];  // the edge opposite vertex k
+      gx[3 * t + k] = (y[i] - y[j]) / area2;
+      gy[3 * t + k] = (x[j] - x[i]) / area2;
+    }
+  }
+  std::vector<double> sxx(2), syy(2), sxy(2);
+  out::plane_stress_p1(triangles, gx, gy, u.data(), lambda, mu, sxx.data(), syy.data(), sxy.data());
+  for (int t = 0; t < 2; ++t) {
+    EXPECT_NEAR(sxx[t], lambda * (a + d) + 2 * mu * a, 1e-9 * mu * a);
+    EXPECT_NEAR(syy[t], lambda * (a + d) + 2 * mu * d, 1e-9 * mu * a);
+    EXPECT_NEAR(sxy[t], mu * (b + c), 1e-9 * mu * a);
+  }
+}
