@@ -96,6 +96,11 @@
 //                               real[] sxx, real[] syy, real[] sxy)   the P0 interpolations of
 //       SigmaXX, SigmaYY, SigmaXY (edp/lib/elasticity.idp) of the [P1, P1] array u, to the last bit
 //       (plugin/core/output.hpp); Dx, Dy = interpolate(Ph, Wh, op = 1), op = 2
+//   long ContactTouching(real[] r)   contact nodes touching: normal reaction r[2i] > 0
+//   long ContactRecordPeaks(real[] pressure, real[] peak, int[] peakStep, int step)   per node: the
+//       step where the pressure exceeds its peak so far, and the peak (max)
+//   long ContactRecordSlip(real[] slip, real[] r, real noise, int[] lastSlipStep, int step)   per
+//       node: the step, where |slip| > noise while touching (plugin/core/contact_history.hpp)
 //   long CsvWriteRow(ofstream f, real[] values)   writes the values comma-separated (no line end),
 //       each in the characters f << value would write (f's precision; plugin/core/output.hpp)
 //   long CsvWriteRows(ofstream f, real[int,int] table)   the same for every row of table, each
@@ -130,6 +135,7 @@
 
 #include "core/files.hpp"
 #include "core/output.hpp"
+#include "core/contact_history.hpp"
 #include "core/json.hpp"
 #include "core/material.hpp"
 #include "core/mesh_check.hpp"
@@ -783,6 +789,30 @@ long PlaneStressAtCentroids(pmesh const& Th, Matrice_Creuse<double>* const& Dx, 
   });
 }
 
+// Per-step records of the contact nodes (plugin/core/contact_history.hpp).
+long ContactTouching(KN<double>* const& reactions) {
+  return sma::contact_history::touching(reactions->N() ? &(*reactions)[0] : nullptr, reactions->N() / 2);
+}
+long ContactRecordPeaks(KN<double>* const& pressure, KN<double>* const& peak, KN<long>* const& peakStep,
+                        long const& step) {
+  return guarded("ContactRecordPeaks", [&] {
+    const long n = pressure->N();
+    if (peak->N() != n || peakStep->N() != n) throw std::invalid_argument("pressure, peak and peakStep differ in size");
+    if (n > 0) sma::contact_history::record_peaks(&(*pressure)[0], n, step, &(*peak)[0], &(*peakStep)[0]);
+    return 0L;
+  });
+}
+long ContactRecordSlip(KN<double>* const& slip, KN<double>* const& reactions, double const& noise,
+                       KN<long>* const& lastSlipStep, long const& step) {
+  return guarded("ContactRecordSlip", [&] {
+    const long n = slip->N();
+    if (reactions->N() != 2 * n || lastSlipStep->N() != n)
+      throw std::invalid_argument("slip, reactions (2 per node) and lastSlipStep differ in size");
+    if (n > 0) sma::contact_history::record_slip(&(*slip)[0], &(*reactions)[0], n, noise, step, &(*lastSlipStep)[0]);
+    return 0L;
+  });
+}
+
 // CSV rows at the stream's precision in the characters `f << x` writes (plugin/core/output.hpp):
 // a row's values comma-separated (no line end), or every row of a table, each ended by a line end.
 int CsvPrecision(std::ostream* f) {
@@ -873,6 +903,9 @@ static void Load_Init() {
   Global.Add("PlaneStressAtCentroids", "(",
              new OneOperator8_<long, pmesh, Matrice_Creuse<double>*, Matrice_Creuse<double>*, A, A, A, A, A>(
                  PlaneStressAtCentroids));
+  Global.Add("ContactTouching", "(", new OneOperator1_<long, A>(ContactTouching));
+  Global.Add("ContactRecordPeaks", "(", new OneOperator4_<long, A, A, KN<long>*, long>(ContactRecordPeaks));
+  Global.Add("ContactRecordSlip", "(", new OneOperator5_<long, A, A, double, KN<long>*, long>(ContactRecordSlip));
   Global.Add("CsvWriteRow", "(", new OneOperator2_<long, std::ostream*, A>(CsvWriteRow));
   Global.Add("CsvWriteRows", "(", new OneOperator2_<long, std::ostream*, KNM<double>*>(CsvWriteRows));
   Global.Add("JsonQuote", "(", new OneOperator1s_<S, S>(JsonQuote));
