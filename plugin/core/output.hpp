@@ -22,25 +22,28 @@
 
 namespace sma::output {
 
-// Base64 (RFC 4648, '=' padding) of n bytes, appended to out.
+// Base64 (RFC 4648, '=' padding) of n bytes, appended to out (written in place: a frame's arrays
+// are some 70 kB of text).
 inline void base64_append(const unsigned char* bytes, std::size_t n, std::string& out) {
   static const char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  out.reserve(out.size() + 4 * ((n + 2) / 3));
+  const std::size_t start = out.size();
+  out.resize(start + 4 * ((n + 2) / 3));
+  char* o = &out[0] + start;
   std::size_t i = 0;
-  for (; i + 3 <= n; i += 3) {
+  for (; i + 3 <= n; i += 3, o += 4) {
     const unsigned v = (unsigned(bytes[i]) << 16) | (unsigned(bytes[i + 1]) << 8) | unsigned(bytes[i + 2]);
-    out += digits[(v >> 18) & 63];
-    out += digits[(v >> 12) & 63];
-    out += digits[(v >> 6) & 63];
-    out += digits[v & 63];
+    o[0] = digits[(v >> 18) & 63];
+    o[1] = digits[(v >> 12) & 63];
+    o[2] = digits[(v >> 6) & 63];
+    o[3] = digits[v & 63];
   }
   if (i < n) {
     const unsigned b1 = i + 1 < n ? bytes[i + 1] : 0;
     const unsigned v = (unsigned(bytes[i]) << 16) | (b1 << 8);
-    out += digits[(v >> 18) & 63];
-    out += digits[(v >> 12) & 63];
-    out += i + 1 < n ? digits[(v >> 6) & 63] : '=';
-    out += '=';
+    o[0] = digits[(v >> 18) & 63];
+    o[1] = digits[(v >> 12) & 63];
+    o[2] = i + 1 < n ? digits[(v >> 6) & 63] : '=';
+    o[3] = '=';
   }
 }
 
