@@ -92,6 +92,24 @@
 //   string StreamWriteError(ofstream f)            flushes f; "" if every write so far succeeded
 //   string JsonFileError(string path)              "" if the file is valid JSON, finite numbers
 //   string JsonQuote(string s), string ShellQuote(string s)
+//   long PlaneStressAtCentroids(mesh Th, matrix Dx, matrix Dy, real[] u, real[] [lambda, mu],
+//                               real[] sxx, real[] syy, real[] sxy)   the P0 interpolations of
+//       SigmaXX, SigmaYY, SigmaXY (edp/lib/elasticity.idp) of the [P1, P1] array u, to the last bit
+//       (plugin/core/output.hpp); Dx, Dy = interpolate(Ph, Wh, op = 1), op = 2
+//   long ContactTouching(real[] r)   contact nodes touching: normal reaction r[2i] > 0
+//   long ContactRecordPeaks(real[] pressure, real[] peak, int[] peakStep, int step)   per node: the
+//       step where the pressure exceeds its peak so far, and the peak (max)
+//   long ContactRecordSlip(real[] slip, real[] r, real noise, int[] lastSlipStep, int step)   per
+//       node: the step, where |slip| > noise while touching (plugin/core/contact_history.hpp)
+//   long CsvWriteRow(ofstream f, real[] values)   writes the values comma-separated (no line end),
+//       each in the characters f << value would write (f's precision; plugin/core/output.hpp)
+//   long CsvWriteRows(ofstream f, real[int,int] table)   the same for every row of table, each
+//       followed by a line end
+//   long VtuWrite(string path, mesh Th, string vectorName, real[] vector, string scalarName,
+//                 real[] scalar, string cellNames, real[int,int] cells)   a ParaView VTU file in
+//       the bytes of savevtk(path, Th, [vector, 0], scalar, cells' columns, order = [1, 1, 0...],
+//       withsurfacemesh = false) (plugin/core/output.hpp): vector 2 values per vertex, scalar 1,
+//       cells one row per triangle, one column per word of cellNames; 0, or -1 if not written.
 //   string MeshFileError(string path, real minQuality)   "" if gmshload may read the MSH file
 //       (plugin/core/mesh_check.hpp: format, cut off, clockwise, area < 1e-8, quality)
 
@@ -106,6 +124,7 @@
 #include <cstring>
 #include <exception>
 #include <fstream>
+#include <iterator>
 #include <memory>
 #include <new>
 #include <sstream>
@@ -115,6 +134,8 @@
 #include <vector>
 
 #include "core/files.hpp"
+#include "core/output.hpp"
+#include "core/contact_history.hpp"
 #include "core/json.hpp"
 #include "core/material.hpp"
 #include "core/mesh_check.hpp"
@@ -602,7 +623,7 @@ long RoundToFloat(KN<double>* const& x) {
   return changed;
 }
 
-double SmaPluginVersion() { return 12.0; }
+double SmaPluginVersion() { return 13.0; }
 
 // FreeFEM's time() has a resolution of one second and clock() counts CPU time; timings of the
 // scenes are wall-clock seconds from a monotonic clock.
@@ -703,6 +724,130 @@ string* JsonFileError(Stack stack, string* const& path) {
 string* MeshFileError(Stack stack, string* const& path, double const& min_quality) {
   return NewString(stack, sma::mesh::check_msh(*path, min_quality));
 }
+// A ParaView VTU file of mesh Th in savevtk's bytes (plugin/core/output.hpp): point fields, a
+// vector (2 values per vertex, interleaved: a [P1, P1] function's array) and a scalar (a P1
+// function's array), and cell fields, the columns of `cells` (one row per triangle: P0 arrays)
+// named by the words of cellNames. Returns 0, or -1 when the file could not be written.
+long VtuWrite(string* const& path, pmesh const& Th, string* const& vectorName, KN<double>* const& vector,
+              string* const& scalarName, KN<double>* const& scalar, string* const& cellNames,
+              KNM<double>* const& cells) {
+  return guarded("VtuWrite", [&] {
+    const Mesh& mesh = *Th;
+    const long nv = mesh.nv, nt = mesh.nt;
+    std::istringstream words(*cellNames);
+    std::vector<std::string> names{std::istream_iterator<std::string>(words), std::istream_iterator<std::string>()};
+    if (vector->N() != 2 * nv || scalar->N() != nv)
+      throw std::invalid_argument("the point fields need 2 and 1 values per vertex (" + std::to_string(nv) + " vertices)");
+    if (cells->N() != nt || cells->M() != (long)names.size())
+      throw std::invalid_argument("the cell fields need one row per triangle (" + std::to_string(nt)
+                                  + ") and one column per name of '" + *cellNames + "'");
+    sma::output::VtuMesh m;
+    m.x.resize(nv); m.y.resize(nv); m.triangles.resize(3 * nt); m.labels.resize(nt);
+    for (long v = 0; v < nv; ++v) { m.x[v] = mesh(v).x; m.y[v] = mesh(v).y; }
+    for (long t = 0; t < nt; ++t) {
+      for (int k = 0; k < 3; ++k) m.triangles[3 * t + k] = mesh(t, k);
+      m.labels[t] = mesh[t].lab;
+    }
+    std::vector<sma::output::VtuField> cellFields, pointFields;
+    for (std::size_t j = 0; j < names.size(); ++j) {
+      sma::output::VtuField f{names[j], 1, std::vector<double>(nt)};
+      for (long t = 0; t < nt; ++t) f.values[t] = (*cells)(t, (long)j);
+      cellFields.push_back(f);
+    }
+    pointFields.push_back({*vectorName, 2, std::vector<double>(&(*vector)[0], &(*vector)[0] + 2 * nv)});
+    pointFields.push_back({*scalarName, 1, std::vector<double>(&(*scalar)[0], &(*scalar)[0] + nv)});
+    const std::string text = sma::output::vtu_file(m, cellFields, pointFields);
+    std::FILE* file = std::fopen(path->c_str(), "wb");
+    if (!file) return -1L;
+    const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size();
+    return (std::fclose(file) == 0 && written) ? 0L : -1L;
+  });
+}
+
+// The in-plane stresses of the P1 displacement u per triangle (plugin/core/output.hpp
+// plane_stress_p1): Dx, Dy the P0 <- P1 interpolation matrices of the derivatives
+// (interpolate(Ph, Wh, op = 1) and op = 2: the coefficients FreeFEM's element computes), lame =
+// [lambda, mu]; sxx, syy, sxy receive one value per triangle.
+long PlaneStressAtCentroids(pmesh const& Th, Matrice_Creuse<double>* const& Dx, Matrice_Creuse<double>* const& Dy,
+                            KN<double>* const& u, KN<double>* const& lame, KN<double>* const& sxx,
+                            KN<double>* const& syy, KN<double>* const& sxy) {
+  return guarded("PlaneStressAtCentroids", [&] {
+    const Mesh& mesh = *Th;
+    const long nv = mesh.nv, nt = mesh.nt;
+    if (u->N() != 2 * nv) throw std::invalid_argument("u needs 2 values per vertex");
+    if (lame->N() != 2) throw std::invalid_argument("lame must be [lambda, mu]");
+    const sma::SparseMatrix dx = ToEigen(Dx), dy = ToEigen(Dy);
+    if (dx.rows() != nt || dx.cols() != nv || dy.rows() != nt || dy.cols() != nv)
+      throw std::invalid_argument("Dx and Dy must be triangles x vertices (interpolate(Ph, Wh, op = 1), op = 2)");
+    std::vector<int> triangles(3 * nt);
+    std::vector<double> gx(3 * nt), gy(3 * nt);
+    for (long t = 0; t < nt; ++t)
+      for (int k = 0; k < 3; ++k) {
+        const int v = mesh(t, k);
+        triangles[3 * t + k] = v;
+        gx[3 * t + k] = dx.coeff(t, v);
+        gy[3 * t + k] = dy.coeff(t, v);
+      }
+    sxx->resize(nt); syy->resize(nt); sxy->resize(nt);
+    sma::output::plane_stress_p1(triangles, gx, gy, &(*u)[0], (*lame)[0], (*lame)[1], &(*sxx)[0], &(*syy)[0],
+                                 &(*sxy)[0]);
+    return 0L;
+  });
+}
+
+// Per-step records of the contact nodes (plugin/core/contact_history.hpp).
+long ContactTouching(KN<double>* const& reactions) {
+  return sma::contact_history::touching(reactions->N() ? &(*reactions)[0] : nullptr, reactions->N() / 2);
+}
+long ContactRecordPeaks(KN<double>* const& pressure, KN<double>* const& peak, KN<long>* const& peakStep,
+                        long const& step) {
+  return guarded("ContactRecordPeaks", [&] {
+    const long n = pressure->N();
+    if (peak->N() != n || peakStep->N() != n) throw std::invalid_argument("pressure, peak and peakStep differ in size");
+    if (n > 0) sma::contact_history::record_peaks(&(*pressure)[0], n, step, &(*peak)[0], &(*peakStep)[0]);
+    return 0L;
+  });
+}
+long ContactRecordSlip(KN<double>* const& slip, KN<double>* const& reactions, double const& noise,
+                       KN<long>* const& lastSlipStep, long const& step) {
+  return guarded("ContactRecordSlip", [&] {
+    const long n = slip->N();
+    if (reactions->N() != 2 * n || lastSlipStep->N() != n)
+      throw std::invalid_argument("slip, reactions (2 per node) and lastSlipStep differ in size");
+    if (n > 0) sma::contact_history::record_slip(&(*slip)[0], &(*reactions)[0], n, noise, step, &(*lastSlipStep)[0]);
+    return 0L;
+  });
+}
+
+// CSV rows at the stream's precision in the characters `f << x` writes (plugin/core/output.hpp):
+// a row's values comma-separated (no line end), or every row of a table, each ended by a line end.
+int CsvPrecision(std::ostream* f) {
+  if ((f->flags() & std::ios::floatfield) != std::ios::fmtflags(0) || (f->flags() & std::ios::showpoint))
+    throw std::invalid_argument("the stream must print reals in the default format (no fixed, scientific or showpoint)");
+  return static_cast<int>(f->precision());
+}
+long CsvWriteRow(std::ostream* const& f, KN<double>* const& values) {
+  return guarded("CsvWriteRow", [&] {
+    const std::string row = sma::output::csv_row(values->N() ? &(*values)[0] : nullptr, values->N(), CsvPrecision(f));
+    f->write(row.data(), (std::streamsize)row.size());
+    return 0L;
+  });
+}
+long CsvWriteRows(std::ostream* const& f, KNM<double>* const& table) {
+  return guarded("CsvWriteRows", [&] {
+    const int precision = CsvPrecision(f);
+    std::vector<double> row(table->M());
+    std::string text;
+    for (long i = 0; i < table->N(); ++i) {
+      for (long j = 0; j < table->M(); ++j) row[j] = (*table)(i, j);
+      text += sma::output::csv_row(row.data(), row.size(), precision);
+      text += '\n';
+    }
+    f->write(text.data(), (std::streamsize)text.size());
+    return 0L;
+  });
+}
+
 string* JsonQuote(Stack stack, string* const& text) { return NewString(stack, sma::json::quote(*text)); }
 string* ShellQuote(Stack stack, string* const& text) { return NewString(stack, sma::files::shell_quote(*text)); }
 
@@ -760,6 +905,15 @@ static void Load_Init() {
   Global.Add("ResultsRelease", "(", new OneOperator1_<long, S>(ResultsRelease));
   Global.Add("StreamWriteError", "(", new OneOperator1s_<S, std::ostream*>(StreamWriteError));
   Global.Add("JsonFileError", "(", new OneOperator1s_<S, S>(JsonFileError));
+  Global.Add("VtuWrite", "(", new OneOperator8_<long, S, pmesh, S, A, S, A, S, KNM<double>*>(VtuWrite));
+  Global.Add("PlaneStressAtCentroids", "(",
+             new OneOperator8_<long, pmesh, Matrice_Creuse<double>*, Matrice_Creuse<double>*, A, A, A, A, A>(
+                 PlaneStressAtCentroids));
+  Global.Add("ContactTouching", "(", new OneOperator1_<long, A>(ContactTouching));
+  Global.Add("ContactRecordPeaks", "(", new OneOperator4_<long, A, A, KN<long>*, long>(ContactRecordPeaks));
+  Global.Add("ContactRecordSlip", "(", new OneOperator5_<long, A, A, double, KN<long>*, long>(ContactRecordSlip));
+  Global.Add("CsvWriteRow", "(", new OneOperator2_<long, std::ostream*, A>(CsvWriteRow));
+  Global.Add("CsvWriteRows", "(", new OneOperator2_<long, std::ostream*, KNM<double>*>(CsvWriteRows));
   Global.Add("JsonQuote", "(", new OneOperator1s_<S, S>(JsonQuote));
   Global.Add("MeshFileError", "(", new OneOperator2s_<S, S, double>(MeshFileError));
   Global.Add("ShellQuote", "(", new OneOperator1s_<S, S>(ShellQuote));

@@ -1,0 +1,36 @@
+// Per-step records of the contact nodes (edp/problems/sleeve/sleeve-2d.idp, time-loop.idp): what
+// the 2D sleeve's script kept in loops over the contact nodes, each iteration costing about 800
+// instructions of FreeFEM's interpreter, every step. Plain loops over arrays; reactions are
+// interleaved (normal, tangential) per node.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+
+namespace sma::contact_history {
+
+// The nodes touching: normal reaction > 0.
+inline long touching(const double* reactions, std::size_t nodes) {
+  long count = 0;
+  for (std::size_t i = 0; i < nodes; ++i) count += reactions[2 * i] > 0;
+  return count;
+}
+
+// Each node's highest pressure so far and the step it was reached at (peakStep set where the
+// pressure exceeds the old peak; the peak then max(peak, pressure), as FreeFEM's max: the first
+// when it is greater, else the second).
+inline void record_peaks(const double* pressure, std::size_t nodes, long step, double* peak, long* peakStep) {
+  for (std::size_t i = 0; i < nodes; ++i) {
+    if (pressure[i] > peak[i]) peakStep[i] = step;
+    peak[i] = peak[i] > pressure[i] ? peak[i] : pressure[i];
+  }
+}
+
+// The last step each node slipped: |slip| above noise while touching (normal reaction > 0).
+inline void record_slip(const double* slip, const double* reactions, std::size_t nodes, double noise, long step,
+                        long* lastSlipStep) {
+  for (std::size_t i = 0; i < nodes; ++i)
+    if (std::abs(slip[i]) > noise && reactions[2 * i] > 0) lastSlipStep[i] = step;
+}
+
+}  // namespace sma::contact_history
