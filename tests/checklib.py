@@ -52,6 +52,21 @@ def run_scene(scene, out_name, *args):
     return out
 
 
+def run_scene_captured(scene, out_name, *args):
+    """Runs edp/scenes/<scene>.edp into build/test-results/<out_name> as given (no -scale added, a
+    failure allowed: the caller checks it); returns (that directory, the CompletedProcess with its
+    captured stdout and stderr)."""
+    out = os.path.join(TEST_RESULTS, out_name)
+    done = subprocess.run([os.path.join(ROOT, "tools", "ff"), f"edp/scenes/{scene}.edp", "-out", out, *args],
+                          cwd=ROOT, capture_output=True, text=True)
+    return out, done
+
+
+def summary_of(out):
+    """The summary.json a scene wrote to `out`."""
+    return json.load(open(os.path.join(out, "summary.json")))
+
+
 def rows(path):
     """The rows of a CSV file with a header line, as dicts."""
     with open(path, newline="") as f:

@@ -22,28 +22,18 @@ coarse quarter rings and 1 s steps (the paper's scale):
     as the circle's closed form says (the radial life's clearance, 1e-3).
 Writes results/checks/sleeve_life_2d.json.
 """
-import json
 import os
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from checklib import ROOT, TEST_RESULTS, check, finish, record  # noqa: E402
+from checklib import TEST_RESULTS, check, finish, record  # noqa: E402
+from checklib import run_scene_captured as run, summary_of as summary  # noqa: E402
 
 CIRCLE = ["-pipeA", "0.0505", "-pipeB", "0.0505"]
 QUICK = ["-quiet", "1", "-vtkevery", "0"]
 
 
-def run(scene, name, *args):
-    out = os.path.join(TEST_RESULTS, name)
-    done = subprocess.run([os.path.join(ROOT, "tools", "ff"), f"edp/scenes/{scene}.edp", "-out", out, *args],
-                          cwd=ROOT, capture_output=True, text=True)
-    return out, done
-
-
-def summary(out):
-    return json.load(open(os.path.join(out, "summary.json")))
 
 
 def ran(out, done, what):

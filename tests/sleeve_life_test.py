@@ -34,8 +34,6 @@
     table.csv as numbers and draws design-chart.png; more dissipation keeps more pressure cold.
 Writes results/checks/sleeve_life.json.
 """
-import json
-import math
 import os
 import subprocess
 import sys
@@ -43,19 +41,11 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 from checklib import ROOT, TEST_RESULTS, check, finish, record, rows  # noqa: E402
+from checklib import run_scene_captured as run, summary_of as summary  # noqa: E402
 
 COARSE = ["-nr", "20", "-dt", "1", "-quiet", "1"]
 
 
-def run(scene, name, *args):
-    out = os.path.join(TEST_RESULTS, name)
-    done = subprocess.run([os.path.join(ROOT, "tools", "ff"), f"edp/scenes/{scene}.edp", "-out", out, *args],
-                          cwd=ROOT, capture_output=True, text=True)
-    return out, done
-
-
-def summary(out):
-    return json.load(open(os.path.join(out, "summary.json")))
 
 
 def history(out):
