@@ -114,9 +114,10 @@ struct StepSettings {
   // Deflation space recycled over the step's linearised solves (deflation.hpp): the vectors kept
   // (0: none), taken from solves of at least recycle_from products, recycle_harvest from each.
   // Off by default: measured on the scaling series' transient (30 steps) it cost more products
-  // than it saved (72 layers 471 -> 516, 108 layers 891 -> 967): the front's small eigenvalues
-  // form a continuum, and the harmonic Ritz vectors found by one solve are not eigenvectors of
-  // the next rounds' operators (other free points).
+  // than it saved at 72 and 108 layers (471 -> 516, 891 -> 967) and saved 12 % at 140 (1489 ->
+  // 1309): the front's small eigenvalues form a continuum, and the harmonic Ritz vectors found by
+  // one solve are not eigenvectors of the next rounds' operators (other free points); on the
+  // paper-scale runs it moves the curves' extrema by up to 1.2 % (docs/measurements.md#m-deflation).
   int recycle = 0, recycle_from = 16, recycle_harvest = 8;
   bool saddle_newton = true;  // Newton moves to a stationary point that is not a minimum of W (solve)
   int stall = 10;  // iterations without halving the residual that stop the step unconverged
