@@ -68,6 +68,7 @@
 #include <vector>
 
 #include "contact_step.hpp"
+#include "deflation.hpp"
 #include "material.hpp"
 #include "psor.hpp"
 #include "sparse_spd.hpp"
@@ -117,6 +118,14 @@ struct StepSettings {
   // block then pins its points one per round, and 12 rounds left a 35-point block creeping (a
   // 1.5 % fall of the residual an iteration, elliptic-friction at a = 2875, step 599).
   int pdas_rounds_stalled = 48;
+  // Deflation space recycled over the step's linearised solves (deflation.hpp): the vectors kept
+  // (0: none), taken from solves of at least recycle_from products, recycle_harvest from each.
+  // Off by default: measured on the scaling series' transient (30 steps) it cost more products
+  // than it saved at 72 and 108 layers (471 -> 516, 891 -> 967) and saved 12 % at 140 (1489 ->
+  // 1309): the front's small eigenvalues form a continuum, and the harmonic Ritz vectors found by
+  // one solve are not eigenvectors of the next rounds' operators (other free points); on the
+  // paper-scale runs it moves the curves' extrema by up to 1.2 % (docs/measurements.md#m-deflation).
+  int recycle = 0, recycle_from = 16, recycle_harvest = 8;
   bool saddle_newton = true;  // Newton moves to a stationary point that is not a minimum of W (solve)
   int stall = 10;  // iterations without halving the residual that stop the step unconverged
   // The same with the dissipation k > 0: the free ring's first transforming step (its uniform
@@ -161,10 +170,14 @@ struct GmresResult {
   Eigen::VectorXd smallest_ritz_vector;  // its Ritz vector (real part, unit length)
   bool finite = true;
   bool converged = false;  // the residual fell to rtol
+  // Asked for (harvest > 0): the harmonic Ritz vectors of the smallest |harmonic Ritz values|
+  // (real parts, columns) and their images under the operator (from the Arnoldi relation, no
+  // product): the deflation space's candidates (deflation.hpp).
+  Eigen::MatrixXd harvest_vectors, harvest_images;
 };
 template <class Op>
 GmresResult gmres(const Op& apply, const Eigen::VectorXd& b, double rtol, int maxit, bool stop_if_unstable = false,
-                  double atol = 0.0, int stable_cap = std::numeric_limits<int>::max()) {
+                  double atol = 0.0, int stable_cap = std::numeric_limits<int>::max(), int harvest = 0) {
   GmresResult out;
   const Eigen::Index n = b.size();
   out.x = Eigen::VectorXd::Zero(n);
@@ -224,6 +237,7 @@ GmresResult gmres(const Op& apply, const Eigen::VectorXd& b, double rtol, int ma
     }
   }
   out.iterations = k;
+  const bool broke_down = k > 0 && !(H(k, k - 1) > 1e-14 * beta);
   // y = R^-1 g by back-substitution (a zero pivot: the operator is singular on the Krylov space).
   Eigen::VectorXd y = Eigen::VectorXd::Zero(k);
   for (int i = k - 1; i >= 0; --i) {
@@ -242,6 +256,32 @@ GmresResult gmres(const Op& apply, const Eigen::VectorXd& b, double rtol, int ma
     out.smallest_ritz_vector = V.leftCols(k) * eig.eigenvectors().col(which).real();
     const double norm = out.smallest_ritz_vector.norm();
     if (norm > 0) out.smallest_ritz_vector /= norm;
+  }
+  if (harvest > 0 && k > 0) {
+    // Harmonic Ritz values: the eigenvalues of H_k + h^2 H_k^-T e_k e_k' (h = H(k, k-1)), the
+    // better approximations of the eigenvalues nearest zero (plain Ritz values where H_k is singular).
+    const Eigen::Index rows = broke_down ? k : k + 1;
+    Eigen::MatrixXd F = H.topLeftCorner(k, k);
+    if (!broke_down) {
+      const Eigen::FullPivLU<Eigen::MatrixXd> lu(F.transpose());
+      if (lu.isInvertible()) {
+        const Eigen::VectorXd f = lu.solve(Eigen::VectorXd::Unit(k, k - 1));
+        if (f.allFinite()) F.col(k - 1) += H(k, k - 1) * H(k, k - 1) * f;
+      }
+    }
+    const Eigen::EigenSolver<Eigen::MatrixXd> eig(F, true);
+    std::vector<Eigen::Index> order((std::size_t)k);
+    for (Eigen::Index i = 0; i < k; ++i) order[(std::size_t)i] = i;
+    std::sort(order.begin(), order.end(), [&](Eigen::Index a, Eigen::Index b) {
+      return std::abs(eig.eigenvalues()[a]) < std::abs(eig.eigenvalues()[b]);
+    });
+    const Eigen::Index take = std::min<Eigen::Index>(harvest, k);
+    Eigen::MatrixXd s(k, take);
+    for (Eigen::Index j = 0; j < take; ++j) s.col(j) = eig.eigenvectors().col(order[(std::size_t)j]).real();
+    if (s.allFinite()) {
+      out.harvest_vectors = V.leftCols(k) * s;
+      out.harvest_images = V.leftCols(rows) * (H.topLeftCorner(rows, k) * s);
+    }
   }
   return out;
 }
@@ -691,6 +731,9 @@ class StepSolver {
     // the next linearisation differ anyway (docs/parameters.md, "Step solver": 0.01 cost the
     // transient of the 72-layer mesh 3.2 times the back-solves of 0.1).
     const double rtol = std::max(1e-12, std::min(set.forcing, s.residual_norm));
+    recycled_.capacity = set.recycle;
+    recycled_.stale = !recycled_.empty();  // a new linearisation
+    const Eigen::VectorXd weight = s.q.cwiseProduct(p_.area);  // D of deflation.hpp
     double first_rhs = 0;
     bool stable = false, saddle = false;
     Eigen::VectorXd model = cl.force;
@@ -728,12 +771,41 @@ class StepSolver {
       const bool saddle_round = allow_saddle && round == 0;
       if (round == 0) first_rhs = rhs.norm();
       const double absolute = std::max(0.1 * set.tol, round > 0 ? rtol * first_rhs : 0.0);
-      const step_detail::GmresResult g =
-          step_detail::gmres(apply, rhs, rtol, set.gmres_maxit, !saddle_round, absolute,
-                             saddle_round ? 64 : std::numeric_limits<int>::max());
+      // Right-preconditioned by the deflation space of the step's earlier solves (deflation.hpp:
+      // the same residual, the same inertia; P = I when recycling is off); its solution and
+      // Ritz vector mapped back by P. Stale images (a new linearisation) are recomputed first.
+      if (recycled_.stale && !recycled_.empty()) refresh(recycled_, sub, weight, apply);
+      const DeflationPreconditioner pre = deflation_on(recycled_, sub, weight);
+      auto preconditioned = [&](const Eigen::VectorXd& y) { return apply(pre.apply(y)); };
+      step_detail::GmresResult g =
+          step_detail::gmres(preconditioned, rhs, rtol, set.gmres_maxit, !saddle_round, absolute,
+                             saddle_round ? 64 : std::numeric_limits<int>::max(),
+                             recycled_.capacity > 0 ? set.recycle_harvest : 0);
+      if (!pre.empty()) {
+        g.x = pre.apply(g.x);
+        g.finite = g.x.allFinite();
+        if (g.smallest_ritz_vector.size() == k) {
+          g.smallest_ritz_vector = pre.apply(g.smallest_ritz_vector);
+          const double norm = g.smallest_ritz_vector.norm();
+          if (norm > 0) g.smallest_ritz_vector /= norm;
+        }
+      }
+      if (recycled_.capacity > 0 && g.iterations >= set.recycle_from && g.harvest_vectors.cols() > 0) {
+        const Eigen::Index h = g.harvest_vectors.cols();
+        Eigen::MatrixXd vectors = Eigen::MatrixXd::Zero(n, h), images = Eigen::MatrixXd::Zero(n, h);
+        for (Eigen::Index j = 0; j < h; ++j) {
+          const Eigen::VectorXd v = pre.apply(g.harvest_vectors.col(j));
+          for (Eigen::Index a = 0; a < k; ++a) {
+            vectors(sub[(std::size_t)a], j) = v[a];
+            images(sub[(std::size_t)a], j) = g.harvest_images(a, j);
+          }
+        }
+        recycle(recycled_, vectors, images, weight);
+      }
       if (set.trace)
-        std::fprintf(set.trace, "  round %d: %ld unpinned, gmres %d its (%s), smallest ritz %.3e, rhs %.3e\n", round,
-                     (long)k, g.iterations, g.converged ? "converged" : "stopped", g.smallest_ritz_real, rhs.norm());
+        std::fprintf(set.trace, "  round %d: %ld unpinned, gmres %d its (%s), smallest ritz %.3e, rhs %.3e, %ld deflated\n",
+                     round, (long)k, g.iterations, g.converged ? "converged" : "stopped", g.smallest_ritz_real, rhs.norm(),
+                     (long)pre.q.cols());
       if (!g.finite && g.smallest_ritz_real > 0) return Gradient;
       // A converged solve whose correction lowers the model's energy is taken as a Newton
       // correction even when a Ritz value came out non-positive: near a neutral mode round-off
@@ -896,6 +968,7 @@ class StepSolver {
 
   const StepProblem& p_;
   StepResult& stats_;
+  RecycledSpace recycled_;  // over the step's linearised solves (newton_direction)
 };
 
 // Solves the step (see the header); chi, r, threshold in/out; T, u out.
