@@ -33,7 +33,9 @@ namespace sma {
 // images under the operator they were found with.
 struct RecycledSpace {
   Eigen::MatrixXd vectors, images;
-  double target = 1.0;  // where the deflated eigenvalues are moved (the operator's largest Ritz magnitude)
+  // Where the deflated eigenvalues are moved: 1, the scale of newton_direction's operator
+  // -df/dbeta / q (its laminate term alone is the identity).
+  double target = 1.0;
   int capacity = 0;     // columns kept (0: no recycling)
   bool stale = false;   // the images are of another operator (an earlier linearisation): refresh()
   bool empty() const { return vectors.cols() == 0; }

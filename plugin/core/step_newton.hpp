@@ -645,6 +645,13 @@ class StepSolver {
     p_.stiffness->backward(z, span<double>(du.data(), (std::size_t)du.size()));
   }
 
+  // The force f = -dW/dbeta / area on point i of state s at fraction b, on the side of its held
+  // fraction that `below` names: psi's slope there, q + k below held and -k above (k the
+  // dissipation, 0 for the paper's law). classify and energy_change read the law's sides here.
+  double side_force(const StepState& s, Eigen::Index i, double b, bool below) const {
+    return s.drive[i] - s.q[i] * b + (below ? s.q[i] + p_.dissipation : -p_.dissipation);
+  }
+
   // Per point: free (may move) or bound, the force it feels in its interval, the interval.
   Classified classify(const StepState& s, const Eigen::VectorXd& beta) const {
     const Eigen::Index n = beta.size();
@@ -657,8 +664,8 @@ class StepSolver {
     for (Eigen::Index i = 0; i < n; ++i) {
       const double q = s.q[i], held = s.held[i], b = beta[i];
       if (!(q > 0)) continue;  // alpha = 0: the law has no free fraction (the target is 0 or 1)
-      const double f = s.drive[i] - q * b, k = p_.dissipation;  // k: the force's step at held, each side
-      const double right = f + (b < held ? q + k : -k), left = f + (b <= held ? q + k : -k);
+      // Moving up from b, and down (at b == held the two sides differ by q + 2 k).
+      const double right = side_force(s, i, b, b < held), left = side_force(s, i, b, b <= held);
       bool free = false;
       double force = 0, lo = 0, hi = 1;
       if (b <= 0) {
@@ -669,9 +676,9 @@ class StepSolver {
         if (right > 0) free = true, force = right, lo = held, hi = 1;
         else if (left < 0) free = true, force = left, lo = 0, hi = held;
       } else if (b > held) {
-        free = true, force = f - k, lo = held, hi = 1;
+        free = true, force = right, lo = held, hi = 1;
       } else {
-        free = true, force = f + q + k, lo = 0, hi = held;
+        free = true, force = right, lo = 0, hi = held;
       }
       cl.free[(std::size_t)i] = free;
       cl.force[i] = force;
@@ -776,7 +783,7 @@ class StepSolver {
       // Ritz vector mapped back by P. Stale images (a new linearisation) are recomputed first.
       if (recycled_.stale && !recycled_.empty()) refresh(recycled_, sub, weight, apply);
       const DeflationPreconditioner pre = deflation_on(recycled_, sub, weight);
-      auto preconditioned = [&](const Eigen::VectorXd& y) { return apply(pre.apply(y)); };
+      auto preconditioned = [&](const Eigen::VectorXd& y) { return pre.empty() ? apply(y) : apply(pre.apply(y)); };
       step_detail::GmresResult g =
           step_detail::gmres(preconditioned, rhs, rtol, set.gmres_maxit, !saddle_round, absolute,
                              saddle_round ? 64 : std::numeric_limits<int>::max(),
@@ -903,11 +910,9 @@ class StepSolver {
     for (Eigen::Index i = 0; i < beta.size(); ++i) {
       const double step = moved[i] - beta[i];
       if (step == 0.0) continue;
-      const double k = p_.dissipation;  // psi's slope k|beta - held|: -k above held, +k below
-      const double f0 = step > 0 ? s.drive[i] - s.q[i] * beta[i] + (beta[i] < s.held[i] ? s.q[i] + k : -k)
-                                 : s.drive[i] - s.q[i] * beta[i] + (beta[i] <= s.held[i] ? s.q[i] + k : -k);
+      const double f0 = side_force(s, i, beta[i], step > 0 ? beta[i] < s.held[i] : beta[i] <= s.held[i]);
       const bool below = moved[i] < s.held[i] || (moved[i] == s.held[i] && step > 0);
-      const double f1 = t.drive[i] - t.q[i] * moved[i] + (below ? t.q[i] + k : -k);
+      const double f1 = side_force(t, i, moved[i], below);
       change -= 0.5 * p_.area[i] * (f0 + f1) * step;
       predicted -= p_.area[i] * f0 * step;
     }
