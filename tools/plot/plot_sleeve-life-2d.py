@@ -51,13 +51,7 @@ def pressure_points(outdir, summary, h, pts):
     axes[1].set_yscale("symlog", linthresh=1e-3)  # 1e-3 on the ellipse, tens at first contact
     axes[1].set_ylabel("(max - min) / mean")
     axes[1].set_xlabel("time (s)")
-    for stage, a, b in life_radial.runs_of(h["stage"][first:]):
-        name, colour = life_radial.STAGES[stage]
-        for x in axes:
-            x.axvspan(t[a - 1] if a > 0 else t[0], t[b], color=colour, alpha=0.12, lw=0,
-                      label=name if x is axes[1] else None)
-    for x in axes:
-        x.grid(alpha=0.3)
+    life_radial.shade_stages(axes, t, h["stage"][first:], axes[1], t[0])
     axes[1].legend(fontsize=7, loc="upper right", ncol=3)
     pipe = summary["parameters"]
     fig.suptitle(f"{summary['scene']}: pressure around the contact (pipe semi-axes {pipe['pipe_A'] * 1e3:g} x "

@@ -40,6 +40,18 @@ def runs_of(stages):
     return out
 
 
+def shade_stages(axes, t, stages, labelled, origin):
+    """Shades each stage's rows (times t) in its colour on every axis, names the stages in the
+    legend of the axis `labelled`, and grids the axes; the first run starts at time `origin`."""
+    for stage, a, b in runs_of(stages):
+        name, colour = STAGES[stage]
+        for ax in axes:
+            ax.axvspan(t[a - 1] if a > 0 else origin, t[b], color=colour, alpha=0.12, lw=0,
+                       label=name if ax is labelled else None)
+    for ax in axes:
+        ax.grid(alpha=0.3)
+
+
 def pressure_temperature(outdir, summary, h):
     fig, ax = plt.subplots(figsize=(8, 5))
     T = [celsius(x) for x in h["T_inner_mean"]]
@@ -75,13 +87,7 @@ def life(outdir, summary, h):
     axes[2].axhline(summary["min_pressure"] / 1e6, color="k", ls="--", lw=0.8, label="-minpressure")
     axes[2].set_ylabel("mean contact pressure (MPa)")
     axes[2].set_xlabel("time (s)")
-    for stage, a, b in runs_of(h["stage"]):
-        name, colour = STAGES[stage]
-        start = t[a - 1] if a > 0 else 0.0
-        for ax in axes:
-            ax.axvspan(start, t[b], color=colour, alpha=0.12, lw=0, label=name if ax is axes[1] else None)
-    for ax in axes:
-        ax.grid(alpha=0.3)
+    shade_stages(axes, t, h["stage"], axes[1], 0.0)
     axes[0].legend(fontsize=7, loc="upper right")
     axes[1].legend(fontsize=7, loc="upper right", ncol=5)
     axes[2].legend(fontsize=7, loc="upper right")
