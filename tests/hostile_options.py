@@ -12,7 +12,9 @@ hostile value: for a real -1, 0, 1e30, -1e30, 1e-300; for an int -1, 0, 21474836
 a path with a space and quotes, '..', a missing file, the empty string. The words getARGV refuses
 for every option alike (nan, inf, a non-number, an empty value, 1e400, 1.5 for an int) are tried on
 the first real and the first int option of each script only. An option seen in an earlier script
-with the same default is skipped (the shared parameter blocks), unless --all; --covered NAME ...
+with the same default and meaning is skipped (the shared parameter blocks), unless --all (a
+script that reads an option of the same name itself, ring-lobed's -Rp, says what it means: its
+checks are its own); --covered NAME ...
 counts the options of those scripts as seen without running them (their -help only), so that
 --only a few scripts tries only what those add to the ones covered before.
 
@@ -117,7 +119,7 @@ def main():
     seen = set()
     for script in scripts():
         if os.path.basename(script)[:-4] in args.covered:
-            seen.update((option, default) for option, _, default, _ in options(script))
+            seen.update((option, default, meaning) for option, _, default, meaning in options(script))
     counts = {}
     with open(args.out, "w") as table, tempfile.TemporaryDirectory() as tmp:
         table.write("script\toption\tvalue\texit\tclass\tmessage\n")
@@ -133,16 +135,16 @@ def main():
             if name == "sleeve-life-2d":  # the same on the 2D model's coarse ring
                 base = ["-mesh", "meshes/sleeve-coarse.msh", "-dt", "1", "-cycles", "1"]
             words_done = set()
-            for option, kind, default, _ in rows:
+            for option, kind, default, meaning in rows:
                 if option == "-out":  # tried by hand in a scratch copy: '..' would be the parent
                     continue
                 values = {"real": REAL, "int": INT, "string": STRING}[kind]
                 if kind in ("real", "int") and kind not in words_done:
                     values = values + (REAL_WORDS if kind == "real" else INT_WORDS)
                     words_done.add(kind)
-                elif not args.all and (option, default) in seen:
+                elif not args.all and (option, default, meaning) in seen:
                     continue
-                seen.add((option, default))
+                seen.add((option, default, meaning))
                 for value in values:
                     if value == default:
                         continue
