@@ -4,7 +4,7 @@
 Not a ctest test (it runs hundreds of FreeFEM processes): run it by hand after a change to the
 option checks, and read its table. Usage:
 
-    tests/hostile_options.py [--only NAME ...] [--timeout 60] [--out FILE.tsv] [--all]
+    tests/hostile_options.py [--only NAME ...] [--covered NAME ...] [--timeout 60] [--out FILE.tsv] [--all]
 
 For each script of edp/scenes and edp/variants it lists the options (-help tsv) and runs the script
 with the cheapest settings (-steps 2 where the script has -steps) and one option at a time set to a
@@ -12,19 +12,28 @@ hostile value: for a real -1, 0, 1e30, -1e30, 1e-300; for an int -1, 0, 21474836
 a path with a space and quotes, '..', a missing file, the empty string. The words getARGV refuses
 for every option alike (nan, inf, a non-number, an empty value, 1e400, 1.5 for an int) are tried on
 the first real and the first int option of each script only. An option seen in an earlier script
-with the same default is skipped (the shared parameter blocks), unless --all.
+with the same default and meaning is skipped (the shared parameter blocks), unless --all (a
+script that reads an option of the same name itself, ring-lobed's -Rp, says what it means: its
+checks are its own); --covered NAME ...
+counts the options of those scripts as seen without running them (their -help only), so that
+--only a few scripts tries only what those add to the ones covered before.
 
 Each run is classified:
   error-named   exit 1 with an `error:` line naming the option or the value (what the project promises)
   error-vague   exit 1 with an `error:` line that does not name the option
   accepted      exit 0: legitimate, or silently ignored/clamped (read the list: a defect if ignored)
   exec-error    exit 8 (FreeFEM Exec error): a defect unless the message names the option
+  late          a failure (exit 1 or 8) after the run had deleted an earlier run's results: before
+                each run the -out folder holds what a finished run leaves (a manifest listing a
+                summary.json, and that file), as in tests/bad_inputs_test.py; a bad option must be
+                refused before it is touched
   timeout       no end within --timeout s: a defect if nothing bounds what the value asks for
   crash         any other exit code
 Writes a TSV (script, option, value, exit, class, message) and prints the counts per class.
 """
 import argparse
 import os
+import shutil
 import signal
 import subprocess
 import sys
@@ -66,9 +75,29 @@ def first_error(text):
     return ""
 
 
-def classify(rc, message, option, value):
+EARLIER = '{"scene": "an earlier run"}\n'
+
+
+def plant_earlier_run(out):
+    """What a finished earlier run leaves in `out`: its manifest and the summary.json it lists."""
+    shutil.rmtree(out, ignore_errors=True)
+    os.makedirs(out)
+    manifest = "sma-results manifest 1\nscene sleeve-circular\nsummary.json\n"
+    for name, text in ((".sma-results", manifest), ("summary.json", EARLIER)):
+        with open(os.path.join(out, name), "w") as f:
+            f.write(text)
+
+
+def earlier_run_kept(out):
+    summary = os.path.join(out, "summary.json")
+    return os.path.isfile(summary) and open(summary).read() == EARLIER
+
+
+def classify(rc, message, option, value, kept=True):
     if rc is None:
         return "timeout"
+    if rc in (1, 8) and not kept:
+        return "late"
     if rc == 0:
         return "accepted"
     if rc == 1:  # named: the option, or the value itself (a file's name in "mesh X not found")
@@ -85,8 +114,12 @@ def main():
     parser.add_argument("--timeout", type=float, default=60)
     parser.add_argument("--out", default="/tmp/hostile_options.tsv")
     parser.add_argument("--all", action="store_true")
+    parser.add_argument("--covered", nargs="*", default=[])
     args = parser.parse_args()
     seen = set()
+    for script in scripts():
+        if os.path.basename(script)[:-4] in args.covered:
+            seen.update((option, default, meaning) for option, _, default, meaning in options(script))
     counts = {}
     with open(args.out, "w") as table, tempfile.TemporaryDirectory() as tmp:
         table.write("script\toption\tvalue\texit\tclass\tmessage\n")
@@ -102,21 +135,23 @@ def main():
             if name == "sleeve-life-2d":  # the same on the 2D model's coarse ring
                 base = ["-mesh", "meshes/sleeve-coarse.msh", "-dt", "1", "-cycles", "1"]
             words_done = set()
-            for option, kind, default, _ in rows:
+            for option, kind, default, meaning in rows:
                 if option == "-out":  # tried by hand in a scratch copy: '..' would be the parent
                     continue
                 values = {"real": REAL, "int": INT, "string": STRING}[kind]
                 if kind in ("real", "int") and kind not in words_done:
                     values = values + (REAL_WORDS if kind == "real" else INT_WORDS)
                     words_done.add(kind)
-                elif not args.all and (option, default) in seen:
+                elif not args.all and (option, default, meaning) in seen:
                     continue
-                seen.add((option, default))
+                seen.add((option, default, meaning))
                 for value in values:
                     if value == default:
                         continue
                     extra = [w for i, w in enumerate(base) if option not in base[i - i % 2:i - i % 2 + 1]]
-                    cmd = [FF, script, *extra, option, value, "-out", os.path.join(tmp, "out")]
+                    out = os.path.join(tmp, "out")
+                    plant_earlier_run(out)
+                    cmd = [FF, script, *extra, option, value, "-out", out]
                     # Its own process group: a timeout ends FreeFEM too, not only tools/ff.
                     proc = subprocess.Popen(cmd, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                                             text=True, start_new_session=True)
@@ -128,7 +163,7 @@ def main():
                         proc.communicate()
                         rc, text = None, ""
                     message = first_error(text)
-                    kind_seen = classify(rc, message, option, value)
+                    kind_seen = classify(rc, message, option, value, earlier_run_kept(out))
                     counts[kind_seen] = counts.get(kind_seen, 0) + 1
                     table.write(f"{name}\t{option}\t{value!r}\t{rc}\t{kind_seen}\t{message[:300]}\n")
                     table.flush()

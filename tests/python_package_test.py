@@ -320,15 +320,24 @@ def error_checks(tmp, r, f):
                 "no state": "fields(None): give an instant ('3-end'), a VTU file of",
                 "cut VTU": cut,
                 "unknown unit": f"{foreign}: no unit is known for the column 'stress_guess'"}
+    # A value the scene refuses: every run checked by the scene first (-checkonly 1), nothing run
+    # and the sweep's folder not made.
+    refused_out = os.path.join(tmp, "refused")
+    errors["refused value"] = error_of(lambda: sma.sweep("sleeve-radial", {"g": [500, -1]}, fixed={"steps": 30},
+                                                         out=refused_out))
+    expected["refused value"] = "-g -1: sleeve-radial -steps 30 -g -1.0 is refused (exit 1): sleeve-radial: -g -1 must be in [0, 1e15]"
+    # A run that fails in its time loop: the others are published, the error names the failed one.
     partial_out = os.path.join(tmp, "partial")
     try:
-        sma.sweep("sleeve-radial", {"g": [500, -1]}, fixed={"steps": 30}, out=partial_out)
+        sma.sweep("sleeve-radial", {"stepmaxit": [50, 1]}, fixed={"steps": 30, "stepfallback": 0}, out=partial_out)
         errors["failed run"], finished = "no error", None
     except sma.SceneError as e:
         errors["failed run"], finished = str(e), getattr(e, "table", None)
-    expected["failed run"] = f"1 of 2 runs of the sweep in {partial_out} failed:\n  {os.path.join(partial_out, 'g=-1')}: "
+    expected["failed run"] = f"1 of 2 runs of the sweep in {partial_out} failed:\n  {os.path.join(partial_out, 'stepmaxit=1')}: "
     wrong = {k: errors[k] for k in expected if expected[k] not in errors[k]}
-    if "-g -1 must be in [0, 1e15]" not in errors["failed run"] or finished is None or list(finished["g_W/(m^2 K)"]) != [500.0]:
+    if os.path.exists(refused_out):
+        wrong["refused value"] = f"{refused_out} was made"
+    if "did not converge" not in errors["failed run"] or finished is None or len(finished) != 1:
         wrong["failed run"] = f"{errors['failed run']}; finished runs {None if finished is None else len(finished)}"
     check(not wrong and not os.path.exists(os.path.join(tmp, "x")) and not os.path.exists(os.path.join(tmp, "s")),
           f"(f) {len(expected)} errors name the option, value, folder, file or column, before any run: "

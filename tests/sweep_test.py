@@ -241,17 +241,26 @@ def main():
               f"(e) VALUES with '$(touch ...)' runs no command (the words are values FreeFEM refuses): "
               f"{first_error(bad_value)}")
 
-        # A value the scene refuses at run time: the others still run; the sweep exits 1 naming it.
+        # A value the scene refuses: every run is checked by the scene (-checkonly 1) before the
+        # sweep takes its folder, so nothing runs and nothing is made there.
+        refused_out = os.path.join(tmp, "refused")
+        refused = sweep_tool("sleeve-radial", "g", "500", "-1", "--out", refused_out, "--", "-steps", "30")
+        check(refused.returncode == 2 and "-g -1: sleeve-radial -steps 30 -g -1.0 is refused" in refused.stderr
+              and "sleeve-radial: -g -1 must be in [0, 1e15]" in refused.stderr and not os.path.exists(refused_out),
+              f"a value the scene refuses (g = -1) stops the sweep before any run, its folder not made: "
+              f"exit {refused.returncode}, {first_error(refused)[:150]}")
+        # A run that fails in its time loop: the others still run; the sweep exits 1 naming it.
         partial_out = os.path.join(tmp, "partial")
-        partial = sweep_tool("sleeve-radial", "g", "500", "-1", "--out", partial_out, "--", "-steps", "30")
+        partial = sweep_tool("sleeve-radial", "stepmaxit", "50", "1", "--out", partial_out, "--", "-steps", "30",
+                             "-stepfallback", "0")
         partial_runs = json.load(open(os.path.join(partial_out, "sweep.json")))["runs"]
         check(partial.returncode == 1 and [run["status"] for run in partial_runs] == ["done", "failed"]
-              and "sleeve-radial: -g -1 must be in [0, 1e15]" in partial_runs[1]["error"]
+              and "step solver (newton" in partial_runs[1]["error"] and "did not converge" in partial_runs[1]["error"]
               and "last lines of its log" in partial_runs[1]["error"]
-              and [row["g"] for row in rows(os.path.join(partial_out, "table.csv"))] == ["500"]
-              and "for -g -1 failed" in partial.stderr,
-              f"a run that fails (g = -1) leaves the others; exit {partial.returncode}, sweep.json has its error "
-              f"line and log: {partial_runs[1].get('error', '').splitlines()[0][:110]}")
+              and [row["stepmaxit"] for row in rows(os.path.join(partial_out, "table.csv"))] == ["50"]
+              and "for -stepmaxit 1 failed" in partial.stderr,
+              f"a run that fails (stepmaxit = 1, no fallback) leaves the others; exit {partial.returncode}, "
+              f"sweep.json has its error line and log: {partial_runs[1].get('error', '').splitlines()[0][:110]}")
 
         parsed = sweep.parse(["sleeve-offset", "offset", "-5e-6", "0", "5e-6", "--jobs", "1"])
         twice = sweep_tool("sleeve-radial", "g", "500", "500")

@@ -166,10 +166,13 @@ def main(argv):
             driver.check_option(scene, p)
         fixed = extra_options(scene, params, args["extra"])
         engine.check_grid(scene, grid, fixed)  # the values, then their types
+        out = args["out"] or os.path.join(driver.ROOT, "results", "sweeps", "-".join([scene] + params))
+        # every run checked by the scene itself before the folder is taken (its earlier results
+        # would be gone by the time a run refused its options)
+        engine.check_runs(out, scene, params, grid, fixed, args["jobs"])
     except (BadInput, driver.SceneError) as e:
         print(f"error: {e}", file=sys.stderr)
         return 2
-    out = args["out"] or os.path.join(driver.ROOT, "results", "sweeps", "-".join([scene] + params))
     # Taken as a scene takes its -out: a folder holding anything its manifest does not list is
     # refused untouched; an earlier sweep's runs, table and figures go first.
     try:

@@ -172,6 +172,21 @@ def folder(out):
     return os.path.normpath(os.path.join(ROOT, path))
 
 
+def check(scene, out, **values):
+    """Checks what run(scene, out, **values) would run, in the scripts' check-only mode (-checkonly
+    1: every check of a run, then exit where the run would take `out`; nothing written): raises
+    SceneError with the scene's error line. A caller that takes a folder of its own before its
+    runs (a sweep) checks them first: a run refusing its options after that would come after the
+    folder's earlier results were deleted."""
+    words = command(scene, out, **values) + ["-checkonly", "1"]
+    result = children.run(words, cwd=ROOT, capture_output=True, text=True)
+    if result.returncode != 0:
+        log = (result.stdout + "\n" + result.stderr).strip().splitlines()
+        errors = [ln for ln in log if ln.startswith("error:")]
+        raise SceneError(f"{scene} {' '.join(words[2:-4])} is refused (exit {result.returncode})"
+                         + (f": {errors[0][len('error:'):].strip()}" if errors else ": " + " / ".join(log[-3:])))
+
+
 def run(scene, out, quiet=True, notes=True, **values):
     """Runs the scene into `out` with the options `values` (g=1000, steps=300); returns `out` as an
     absolute path (a relative `out` is taken from the repository root).

@@ -16,7 +16,9 @@ unit); sweep.json (what ran, each run's folder and status); and the figures: one
 force-temperature.png and force-time.png (one curve per value); several, force-temperature.png
 with one panel per fixed value of the other parameters (the first parameter's curves overlaid)
 and final-pressure.png (the final mean pressure against the first parameter, one line per fixed
-value of the others). A run that fails stops nothing else; it is named at the end.
+value of the others). Every run is first checked by the scene (-checkonly 1: its checks, nothing
+written): a value it refuses stops the sweep before the folder is taken. A run that fails later
+(a loop that does not converge) stops nothing else; it is named at the end.
 """
 import concurrent.futures
 import csv
@@ -407,6 +409,33 @@ def check_grid(scene, grid, fixed):
     return params, texts
 
 
+def check_runs(out, scene, params, grid, fixed, jobs):
+    """Checks every run of the grid (driver.check: the scene's check-only mode, nothing written),
+    `jobs` at a time, before the caller takes `out`: a run that refused its options only after
+    the sweep's folder was taken came after an earlier sweep's results there were deleted
+    (ARGS='-gpipe -5'). Raises SceneError naming the first refused run's values and its error."""
+    texts = [[text_of(v) for v in grid[p]] for p in params]
+    combos = list(itertools.product(*texts))
+    values = list(itertools.product(*[grid[p] for p in params]))
+    jobs = max(1, min(jobs, os.cpu_count() or 1, len(combos)))
+
+    def one(i):
+        driver.check(scene, run_folder(out, params, combos[i]), **fixed, **dict(zip(params, values[i])))
+    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+        futures = [pool.submit(one, i) for i in range(len(combos))]
+        try:
+            for i, future in enumerate(futures):  # in the grid's order: the first refused run is named
+                try:
+                    future.result()
+                except SceneError as e:
+                    label = " ".join(f"-{p} {v}" for p, v in zip(params, combos[i]))
+                    raise SceneError(f"{label}: {e}") from None
+        except BaseException:
+            pool.shutdown(wait=False, cancel_futures=True)
+            children.stop_running()
+            raise
+
+
 def run_grid(out, scene, params, grid, fixed, jobs, record=None, say=print, warn=None):
     """Runs every combination of the values of `grid` ({param: [values]}, checked by check_grid)
     into its folder of `out` (taken by the caller), then publishes table.csv, the figures and
@@ -623,7 +652,8 @@ def sweep(scene, grid, fixed=None, jobs=2, out=None):
     or several options), with the options `fixed` ({name: value}) in every run, `jobs` runs at a
     time (at most the cores), into `out` (default results/sweeps/<scene>-<param>[-<param>...];
     relative to the repository root). Everything is checked before anything runs (SceneError
-    naming the scene, option or value). Writes table.csv, sweep.json and the figures (module
+    naming the scene, option or value), every run by the scene itself in its check-only mode
+    (-checkonly 1), before the folder is taken. Writes table.csv, sweep.json and the figures (module
     docstring) and returns the table as a pandas DataFrame: one row per run, the parameters
     (named with their units: interference_m, g_W/(m^2 K)), the key figures (first_contact_time_s,
     final_pressure_mean_Pa, ...), and `out`, the run's folder (absolute); attrs["out"] is the
@@ -635,6 +665,7 @@ def sweep(scene, grid, fixed=None, jobs=2, out=None):
     if not isinstance(jobs, int) or isinstance(jobs, bool) or jobs < 1:
         raise SceneError(f"jobs = {jobs!r}: a whole number of runs at a time >= 1")
     out = driver.folder(out if out is not None else os.path.join("results", "sweeps", "-".join([scene] + params)))
+    check_runs(out, scene, params, grid, fixed, jobs)
     try:
         results_io.claim(out, "sweep " + scene)
     except results_io.ResultsError as e:
