@@ -58,7 +58,8 @@
 //                          real[] contact, real[] chi, real[] T, real[] u, real[] stats)
 //       one time step of the fraction model by the globalised Newton method of
 //       plugin/core/step_newton.hpp (the packing of the arrays: at the function below); returns
-//       its iterations. A step that does not converge returns stats[0] = 0, and
+//       its iterations; settings[20] = 1 keeps chi, u and the slip thresholds of a step that does
+//       not converge at the step's start (the caller's fall-back). A step that does not converge returns stats[0] = 0, and
 //   string StepFailureMessage(long)   says why ("" after a converged step).
 //   long StepFractionRecord(real[] [rho L / dt, rho, a, L, T0, Tc], matrix Q, matrix Interp,
 //                           real[] chi, real[] T, real[] b, real[] load, real[] s)
@@ -506,11 +507,14 @@ Eigen::VectorXd Segment(KN<double>* a, long start, long length, const char* what
 // (column 4, the slip thresholds, in/out); contact = [tangentFree; mu; r (2 per node, in/out)];
 // chi in/out; T, u out; stats = [converged, iterations, gradient steps, evaluations, products,
 // heat solves, stiffness solves, PSOR sweeps, slip iterations, residual]. Returns the iterations.
+// settings[20] (optional) = 1: a step that does not converge leaves chi, u and the table's slip
+// thresholds as they came in (the step's start, for the caller's fall-back: no copies of them).
 long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM<double>* const& table,
                        KN<double>* const& contact, KN<double>* const& chi, KN<double>* const& T,
                        KN<double>* const& u, KN<double>* const& stats) {
   return guarded("StepSolveFraction", [&] {
-    if (settings->N() != 20) throw std::invalid_argument("settings must have 20 values");
+    if (settings->N() != 20 && settings->N() != 21) throw std::invalid_argument("settings must have 20 or 21 values");
+    const bool keepStartUnconverged = settings->N() == 21 && (*settings)[20] != 0;
     const long slot = lrint((*settings)[0]);
     if (slot < 0 || slot >= (long)StepSlots().size())
       throw std::invalid_argument("no step operators in slot " + std::to_string(slot) + " (StepOperatorsSet first)");
@@ -570,13 +574,15 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
     if (!p.contact && m > 0) throw std::invalid_argument("the stiffness slot has no contact problem (SpdDelassus first)");
     Eigen::VectorXd x = Segment(chi, 0, n, "chi"), temperature(nodes), displacement(dofs);
     const sma::StepResult res = sma::solve_fraction_step(p, set, x, r, threshold, temperature, displacement);
-    for (long i = 0; i < n; ++i) (*chi)[i] = x[i];
     if (T->N() != nodes) T->resize(nodes);
-    if (u->N() != dofs) u->resize(dofs);
     for (long i = 0; i < nodes; ++i) (*T)[i] = temperature[i];
-    for (long i = 0; i < dofs; ++i) (*u)[i] = displacement[i];
-    for (long i = 0; i < m; ++i) (*table)(i, 4L) = threshold[i];
     for (long i = 0; i < 2 * m; ++i) (*contact)[2 * m + i] = r[i];
+    if (res.converged || !keepStartUnconverged) {
+      for (long i = 0; i < n; ++i) (*chi)[i] = x[i];
+      if (u->N() != dofs) u->resize(dofs);
+      for (long i = 0; i < dofs; ++i) (*u)[i] = displacement[i];
+      for (long i = 0; i < m; ++i) (*table)(i, 4L) = threshold[i];
+    }
     const double values[12] = {res.converged ? 1.0 : 0.0, (double)res.iterations, (double)res.gradient_steps,
                                (double)res.evaluations, (double)res.products, (double)res.heat_solves,
                                (double)res.stiffness_solves, (double)res.psor_sweeps, (double)res.slip_iterations,
