@@ -107,6 +107,9 @@
 //       step where the pressure exceeds its peak so far, and the peak (max)
 //   long ContactRecordSlip(real[] slip, real[] r, real noise, int[] lastSlipStep, int step)   per
 //       node: the step, where |slip| > noise while touching (plugin/core/contact_history.hpp)
+//   long AreaFractions(real[] chi, real[] area, real[] fractions)   fractions = the area fractions
+//       [austenite, martensite 1, martensite 2] of signed martensite fractions chi (resized to 3;
+//       plugin/core/step_record.hpp, as the script's FractionsOfChi computed them)
 //   long ContactHeatExchange(real[int,int] contactTable, real[] r, int m, real gContact, real gPipe,
 //                            real Tpipe, real[] g, real[] Text)   the sleeve's default heat condition
 //       at its m contact nodes (edp/problems/sleeve/time-loop.idp): g = gContact where the node
@@ -873,6 +876,16 @@ long ContactRecordSlip(KN<double>* const& slip, KN<double>* const& reactions, do
 
 // CSV rows at the stream's precision in the characters `f << x` writes (plugin/core/output.hpp):
 // a row's values comma-separated (no line end), or every row of a table, each ended by a line end.
+long AreaFractions(KN<double>* const& chi, KN<double>* const& area, KN<double>* const& fractions) {
+  return guarded("AreaFractions", [&] {
+    double f[3];
+    sma::area_fractions(cview(chi), cview(area), f);
+    if (fractions->N() != 3) fractions->resize(3);
+    for (int k = 0; k < 3; ++k) (*fractions)[k] = f[k];
+    return 3L;
+  });
+}
+
 long ContactHeatExchange(KNM<double>* const& table, KN<double>* const& r, long const& m, double const& gContact,
                          double const& gPipe, double const& Tpipe, KN<double>* const& g, KN<double>* const& Text) {
   return guarded("ContactHeatExchange", [&] {
@@ -986,6 +999,7 @@ static void Load_Init() {
   Global.Add("ContactTouching", "(", new OneOperator1_<long, A>(ContactTouching));
   Global.Add("ContactRecordPeaks", "(", new OneOperator4_<long, A, A, KN<long>*, long>(ContactRecordPeaks));
   Global.Add("ContactRecordSlip", "(", new OneOperator5_<long, A, A, double, KN<long>*, long>(ContactRecordSlip));
+  Global.Add("AreaFractions", "(", new OneOperator3_<long, A, A, A>(AreaFractions));
   Global.Add("ContactHeatExchange", "(",
              new OneOperator8_<long, KNM<double>*, A, long, double, double, double, A, A>(ContactHeatExchange));
   Global.Add("CsvWriteRow", "(", new OneOperator2_<long, std::ostream*, A>(CsvWriteRow));

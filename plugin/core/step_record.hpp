@@ -43,4 +43,23 @@ void fraction_step_record(const ThermalLaw& law, double latent_rate, span<const 
   for (std::size_t i = 0; i < n; ++i) stress[i] = law.alpha(at_points[i]) * chi[i];
 }
 
+// The area fractions [austenite, martensite 1, martensite 2] of signed martensite fractions chi
+// over points of the given areas (edp/solvers/dct.idp FractionsOfChi), in the script's arithmetic:
+// |chi|, chi + |chi| (2 chi where chi > 0) and |chi| - chi (-2 chi where chi < 0) each dotted with
+// the areas, summed in the points' order, over the areas' sum.
+inline void area_fractions(span<const double> chi, span<const double> area, double fractions[3]) {
+  if (area.size() != chi.size()) throw std::invalid_argument("area_fractions: one area per point");
+  double total = 0, latent = 0, m1 = 0, m2 = 0;
+  for (std::size_t i = 0; i < area.size(); ++i) total += area[i];
+  for (std::size_t i = 0; i < chi.size(); ++i) {
+    const double b = std::abs(chi[i]);
+    m1 += area[i] * (chi[i] + b);
+    m2 += area[i] * (b - chi[i]);
+    latent += area[i] * b;
+  }
+  fractions[1] = 0.5 * m1 / total;
+  fractions[2] = 0.5 * m2 / total;
+  fractions[0] = 1. - latent / total;
+}
+
 }  // namespace sma

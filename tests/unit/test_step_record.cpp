@@ -72,3 +72,23 @@ TEST(StepRecord, MismatchedSizesAndBadLawAreRefused) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(StepRecord, AreaFractionsOfSignedFractions) {
+  // 4 points: austenite, all martensite 1, half martensite 2, a quarter martensite 1.
+  std::vector<double> chi = {0.0, 1.0, -0.5, 0.25}, area = {1.0, 2.0, 4.0, 8.0};
+  double f[3];
+  sma::area_fractions(sma::span<const double>(chi.data(), 4), sma::span<const double>(area.data(), 4), f);
+  const double total = 15.0;
+  EXPECT_DOUBLE_EQ(f[1], (2.0 * 1.0 + 8.0 * 0.25) / total);  // martensite 1: 4 of 15
+  EXPECT_DOUBLE_EQ(f[2], (4.0 * 0.5) / total);               // martensite 2: 2 of 15
+  EXPECT_DOUBLE_EQ(f[0], 1.0 - 6.0 / total);                 // the rest austenite
+  EXPECT_NEAR(f[0] + f[1] + f[2], 1.0, 1e-15);
+  std::vector<double> shortArea = {1.0};
+  EXPECT_THROW(sma::area_fractions(sma::span<const double>(chi.data(), 4),
+                                   sma::span<const double>(shortArea.data(), 1), f),
+               std::invalid_argument);
+}
+
+}  // namespace
