@@ -496,9 +496,9 @@ Eigen::VectorXd Segment(KN<double>* a, long start, long length, const char* what
   if (start + length > a->N())
     throw std::invalid_argument(std::string(what) + ": " + std::to_string(a->N()) + " values, " +
                                 std::to_string(start + length) + " needed");
-  Eigen::VectorXd v(length);
-  for (long i = 0; i < length; ++i) v[i] = (*a)[start + i];
-  return v;
+  if (length == 0) return Eigen::VectorXd();
+  // (a copy of the contiguous values, vectorised: an element loop cost 0.6 % of the default run)
+  return Eigen::Map<const Eigen::VectorXd>(&(*a)[start], length);
 }
 
 // One time step of the fraction model (plugin/core/step_newton.hpp). settings = [operator slot,
