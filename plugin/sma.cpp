@@ -58,8 +58,14 @@
 //                          real[] contact, real[] chi, real[] T, real[] u, real[] stats)
 //       one time step of the fraction model by the globalised Newton method of
 //       plugin/core/step_newton.hpp (the packing of the arrays: at the function below); returns
-//       its iterations. A step that does not converge returns stats[0] = 0, and
+//       its iterations; settings[20] = 1 keeps chi, u and the slip thresholds of a step that does
+//       not converge at the step's start (the caller's fall-back). A step that does not converge returns stats[0] = 0, and
 //   string StepFailureMessage(long)   says why ("" after a converged step).
+//   long StepFractionRecord(real[] [rho L / dt, rho, a, L, T0, Tc], matrix Q, matrix Interp,
+//                           real[] chi, real[] T, real[] b, real[] load, real[] s)
+//       the record of a step the step solver solved (plugin/core/step_record.hpp): load =
+//       Q ((|chi| - b) rho L / dt), s = alpha(Interp T) chi, then b = |chi| (in/out); the products
+//       are FreeFEM's own (the script's numbers to the bit). Returns the number of points.
 //   long RoundToFloat(real[] x)   rounds every value to the nearest single-precision float
 //       (IEEE round to nearest even), in place; returns how many values changed.
 //   real SmaPluginVersion()  version stamp, checked by edp/lib/plugin.idp.
@@ -101,6 +107,14 @@
 //       step where the pressure exceeds its peak so far, and the peak (max)
 //   long ContactRecordSlip(real[] slip, real[] r, real noise, int[] lastSlipStep, int step)   per
 //       node: the step, where |slip| > noise while touching (plugin/core/contact_history.hpp)
+//   long AreaFractions(real[] chi, real[] area, real[] fractions)   fractions = the area fractions
+//       [austenite, martensite 1, martensite 2] of signed martensite fractions chi (resized to 3;
+//       plugin/core/step_record.hpp, as the script's FractionsOfChi computed them)
+//   long ContactHeatExchange(real[int,int] contactTable, real[] r, int m, real gContact, real gPipe,
+//                            real Tpipe, real[] g, real[] Text)   the sleeve's default heat condition
+//       at its m contact nodes (edp/problems/sleeve/time-loop.idp): g = gContact where the node
+//       presses on the pipe (r[2i] > 0), gPipe elsewhere, Text = Tpipe (the nodes: the table's
+//       column 0); returns how many press (plugin/core/contact_history.hpp)
 //   long CsvWriteRow(ofstream f, real[] values)   writes the values comma-separated (no line end),
 //       each in the characters f << value would write (f's precision; plugin/core/output.hpp)
 //   long CsvWriteRows(ofstream f, real[int,int] table)   the same for every row of table, each
@@ -147,6 +161,7 @@
 #include "core/phase_fraction.hpp"
 #include "core/phase_projection.hpp"
 #include "core/step_newton.hpp"
+#include "core/step_record.hpp"
 
 using namespace Fem2D;
 
@@ -481,9 +496,9 @@ Eigen::VectorXd Segment(KN<double>* a, long start, long length, const char* what
   if (start + length > a->N())
     throw std::invalid_argument(std::string(what) + ": " + std::to_string(a->N()) + " values, " +
                                 std::to_string(start + length) + " needed");
-  Eigen::VectorXd v(length);
-  for (long i = 0; i < length; ++i) v[i] = (*a)[start + i];
-  return v;
+  if (length == 0) return Eigen::VectorXd();
+  // (a copy of the contiguous values, vectorised: an element loop cost 0.6 % of the default run)
+  return Eigen::Map<const Eigen::VectorXd>(&(*a)[start], length);
 }
 
 // One time step of the fraction model (plugin/core/step_newton.hpp). settings = [operator slot,
@@ -495,11 +510,14 @@ Eigen::VectorXd Segment(KN<double>* a, long start, long length, const char* what
 // (column 4, the slip thresholds, in/out); contact = [tangentFree; mu; r (2 per node, in/out)];
 // chi in/out; T, u out; stats = [converged, iterations, gradient steps, evaluations, products,
 // heat solves, stiffness solves, PSOR sweeps, slip iterations, residual]. Returns the iterations.
+// settings[20] (optional) = 1: a step that does not converge leaves chi, u and the table's slip
+// thresholds as they came in (the step's start, for the caller's fall-back: no copies of them).
 long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM<double>* const& table,
                        KN<double>* const& contact, KN<double>* const& chi, KN<double>* const& T,
                        KN<double>* const& u, KN<double>* const& stats) {
   return guarded("StepSolveFraction", [&] {
-    if (settings->N() != 20) throw std::invalid_argument("settings must have 20 values");
+    if (settings->N() != 20 && settings->N() != 21) throw std::invalid_argument("settings must have 20 or 21 values");
+    const bool keepStartUnconverged = settings->N() == 21 && (*settings)[20] != 0;
     const long slot = lrint((*settings)[0]);
     if (slot < 0 || slot >= (long)StepSlots().size())
       throw std::invalid_argument("no step operators in slot " + std::to_string(slot) + " (StepOperatorsSet first)");
@@ -559,13 +577,15 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
     if (!p.contact && m > 0) throw std::invalid_argument("the stiffness slot has no contact problem (SpdDelassus first)");
     Eigen::VectorXd x = Segment(chi, 0, n, "chi"), temperature(nodes), displacement(dofs);
     const sma::StepResult res = sma::solve_fraction_step(p, set, x, r, threshold, temperature, displacement);
-    for (long i = 0; i < n; ++i) (*chi)[i] = x[i];
     if (T->N() != nodes) T->resize(nodes);
-    if (u->N() != dofs) u->resize(dofs);
     for (long i = 0; i < nodes; ++i) (*T)[i] = temperature[i];
-    for (long i = 0; i < dofs; ++i) (*u)[i] = displacement[i];
-    for (long i = 0; i < m; ++i) (*table)(i, 4L) = threshold[i];
     for (long i = 0; i < 2 * m; ++i) (*contact)[2 * m + i] = r[i];
+    if (res.converged || !keepStartUnconverged) {
+      for (long i = 0; i < n; ++i) (*chi)[i] = x[i];
+      if (u->N() != dofs) u->resize(dofs);
+      for (long i = 0; i < dofs; ++i) (*u)[i] = displacement[i];
+      for (long i = 0; i < m; ++i) (*table)(i, 4L) = threshold[i];
+    }
     const double values[12] = {res.converged ? 1.0 : 0.0, (double)res.iterations, (double)res.gradient_steps,
                                (double)res.evaluations, (double)res.products, (double)res.heat_solves,
                                (double)res.stiffness_solves, (double)res.psor_sweeps, (double)res.slip_iterations,
@@ -573,6 +593,41 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
     for (int k = 0; k < 12; ++k) (*stats)[k] = values[k];
     StepFailure() = res.failure;
     return (long)res.iterations;
+  });
+}
+
+// y = M x by FreeFEM's own product (HashMatrix::addMatMul, as `y = M * x` in a script: the same
+// sums in the same order).
+void FreeFemProduct(Matrice_Creuse<double>* M, const double* x, double* y, long rows, const char* what) {
+  HashMatrix<int, double>* A = M->pHM();
+  if (!A) throw std::invalid_argument(std::string(what) + " is empty");
+  if (A->n != rows) throw std::invalid_argument(std::string(what) + " has " + std::to_string(A->n) + " rows, " +
+                                                std::to_string(rows) + " needed");
+  std::fill(y, y + rows, 0.0);
+  A->addMatMul(const_cast<double*>(x), y);
+}
+
+long StepFractionRecord(KN<double>* const& settings, Matrice_Creuse<double>* const& Q,
+                        Matrice_Creuse<double>* const& interp, KN<double>* const& chi, KN<double>* const& T,
+                        KN<double>* const& b, KN<double>* const& load, KN<double>* const& s) {
+  return guarded("StepFractionRecord", [&] {
+    if (settings->N() != 6) throw std::invalid_argument("settings must be [rho L / dt, rho, a, L, T0, Tc]");
+    const long n = chi->N(), nodes = T->N();
+    const HashMatrix<int, double>* q = Q->pHM();
+    const HashMatrix<int, double>* in = interp->pHM();
+    if (!q || !in) throw std::invalid_argument("Q and Interp must be set");
+    if (q->m != n || in->m != nodes)
+      throw std::invalid_argument("Q must be nodes x " + std::to_string(n) + " points and Interp points x " +
+                                  std::to_string(nodes) + " nodes");
+    if (b->N() != n) throw std::invalid_argument("b must have one value per point");
+    if (load->N() != q->n) load->resize(q->n);
+    if (s->N() != n) s->resize(n);
+    const sma::ThermalLaw law{(*settings)[1], (*settings)[2], (*settings)[3], (*settings)[4], (*settings)[5]};
+    sma::fraction_step_record(
+        law, (*settings)[0], cview(chi), view(b), cview(T),
+        [&](const double* x, double* y) { FreeFemProduct(Q, x, y, q->n, "Q"); },
+        [&](const double* x, double* y) { FreeFemProduct(interp, x, y, n, "Interp"); }, view(load), view(s));
+    return n;
   });
 }
 
@@ -623,7 +678,7 @@ long RoundToFloat(KN<double>* const& x) {
   return changed;
 }
 
-double SmaPluginVersion() { return 13.0; }
+double SmaPluginVersion() { return 14.0; }
 
 // FreeFEM's time() has a resolution of one second and clock() counts CPU time; timings of the
 // scenes are wall-clock seconds from a monotonic clock.
@@ -821,6 +876,35 @@ long ContactRecordSlip(KN<double>* const& slip, KN<double>* const& reactions, do
 
 // CSV rows at the stream's precision in the characters `f << x` writes (plugin/core/output.hpp):
 // a row's values comma-separated (no line end), or every row of a table, each ended by a line end.
+long AreaFractions(KN<double>* const& chi, KN<double>* const& area, KN<double>* const& fractions) {
+  return guarded("AreaFractions", [&] {
+    double f[3];
+    sma::area_fractions(cview(chi), cview(area), f);
+    if (fractions->N() != 3) fractions->resize(3);
+    for (int k = 0; k < 3; ++k) (*fractions)[k] = f[k];
+    return 3L;
+  });
+}
+
+long ContactHeatExchange(KNM<double>* const& table, KN<double>* const& r, long const& m, double const& gContact,
+                         double const& gPipe, double const& Tpipe, KN<double>* const& g, KN<double>* const& Text) {
+  return guarded("ContactHeatExchange", [&] {
+    if (m < 0 || (m > 0 && (table->N() < m || table->M() < 1 || r->N() < 2 * m)))
+      throw std::invalid_argument("the contact table and reactions must cover " + std::to_string(m) + " nodes");
+    if (Text->N() != g->N()) throw std::invalid_argument("g and Text must have one value per heat node");
+    if (m == 0) return 0L;
+    std::vector<long> node(m);
+    for (long i = 0; i < m; ++i) {
+      node[i] = std::lrint((*table)(i, 0L));
+      if (node[i] < 0 || node[i] >= g->N())
+        throw std::invalid_argument("contact node " + std::to_string(i) + " is heat node " + std::to_string(node[i]) +
+                                    ", outside 0.." + std::to_string(g->N() - 1));
+    }
+    return sma::contact_history::heat_exchange(node.data(), &(*r)[0], (std::size_t)m, gContact, gPipe, Tpipe,
+                                               &(*g)[0], &(*Text)[0]);
+  });
+}
+
 int CsvPrecision(std::ostream* f) {
   if ((f->flags() & std::ios::floatfield) != std::ios::fmtflags(0) || (f->flags() & std::ios::showpoint))
     throw std::invalid_argument("the stream must print reals in the default format (no fixed, scientific or showpoint)");
@@ -878,6 +962,9 @@ static void Load_Init() {
   Global.Add("StepOperatorsSet", "(",
              new OneOperator4_<long, long, Matrice_Creuse<double>*, Matrice_Creuse<double>*,
                                Matrice_Creuse<double>*>(StepOperatorsSet));
+  Global.Add("StepFractionRecord", "(",
+             new OneOperator8_<long, A, Matrice_Creuse<double>*, Matrice_Creuse<double>*, A, A, A, A, A>(
+                 StepFractionRecord));
   Global.Add("StepSolveFraction", "(",
              new OneOperator8_<long, A, A, KNM<double>*, A, A, A, A, A>(StepSolveFraction));
   Global.Add("AuchmutyLocal", "(", new OneOperator5_<double, A, A, A, A, A>(AuchmutyLocal));
@@ -912,6 +999,9 @@ static void Load_Init() {
   Global.Add("ContactTouching", "(", new OneOperator1_<long, A>(ContactTouching));
   Global.Add("ContactRecordPeaks", "(", new OneOperator4_<long, A, A, KN<long>*, long>(ContactRecordPeaks));
   Global.Add("ContactRecordSlip", "(", new OneOperator5_<long, A, A, double, KN<long>*, long>(ContactRecordSlip));
+  Global.Add("AreaFractions", "(", new OneOperator3_<long, A, A, A>(AreaFractions));
+  Global.Add("ContactHeatExchange", "(",
+             new OneOperator8_<long, KNM<double>*, A, long, double, double, double, A, A>(ContactHeatExchange));
   Global.Add("CsvWriteRow", "(", new OneOperator2_<long, std::ostream*, A>(CsvWriteRow));
   Global.Add("CsvWriteRows", "(", new OneOperator2_<long, std::ostream*, KNM<double>*>(CsvWriteRows));
   Global.Add("JsonQuote", "(", new OneOperator1s_<S, S>(JsonQuote));

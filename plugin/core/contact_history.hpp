@@ -33,4 +33,20 @@ inline void record_slip(const double* slip, const double* reactions, std::size_t
     if (std::abs(slip[i]) > noise && reactions[2 * i] > 0) lastSlipStep[i] = step;
 }
 
+// The sleeve's default heat condition at the contact nodes (edp/problems/sleeve/time-loop.idp,
+// SleeveHeatCondition): exchange coefficient gContact where the node presses on the pipe (normal
+// reaction > 0), gPipe where it does not, with the pipe at Tpipe; node[i] is the heat node of
+// contact node i. Returns how many press.
+inline long heat_exchange(const long* node, const double* reactions, std::size_t nodes, double gContact, double gPipe,
+                          double Tpipe, double* g, double* Text) {
+  long pressing = 0;
+  for (std::size_t i = 0; i < nodes; ++i) {
+    const bool presses = reactions[2 * i] > 0;
+    g[node[i]] = presses ? gContact : gPipe;
+    Text[node[i]] = Tpipe;
+    pressing += presses;
+  }
+  return pressing;
+}
+
 }  // namespace sma::contact_history

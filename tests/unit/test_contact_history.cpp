@@ -31,3 +31,16 @@ TEST(ContactHistory, SlipCountsOnlyAboveNoiseWhileTouching) {
   EXPECT_EQ(last[2], 0);  // below the noise
   EXPECT_EQ(last[3], 0);  // free
 }
+
+TEST(ContactHistory, HeatExchangeByContactStatus) {
+  // 3 contact nodes on heat nodes 4, 0, 2 of 5; node 0 presses, node 1 has r_n = 0, node 2 pulls.
+  const long node[] = {4, 0, 2};
+  const double r[] = {3.0, 1.0, 0.0, 5.0, -1e-9, 0.0};
+  double g[] = {10, 10, 10, 10, 10}, Text[] = {293, 293, 293, 293, 293};
+  EXPECT_EQ(ch::heat_exchange(node, r, 3, 2000, 500, 300, g, Text), 1);
+  const double gWant[] = {500, 10, 500, 10, 2000}, TWant[] = {300, 293, 300, 293, 300};
+  for (int k = 0; k < 5; ++k) {
+    EXPECT_EQ(g[k], gWant[k]) << k;
+    EXPECT_EQ(Text[k], TWant[k]) << k;
+  }
+}

@@ -1,0 +1,65 @@
+// The fraction model's step record after the step solver (edp/solvers/dct.idp, newton path): what
+// the script computed in six statements and four function calls after each step, each costing
+// FreeFEM's interpreter thousands of instructions, every step:
+//   b     = |chi|                                  (the latent fraction of each point)
+//   load  = Q ((b - bStart) rho L / dt)            (the step's latent heat as nodal loads)
+//   s     = alpha(Interp T) chi                    (the phase stress at the step's end)
+//   bStart = b                                     (the next step's load starts from it)
+// The two sparse products are the caller's (the glue passes FreeFEM's own matrix-vector product,
+// so that the sums run in FreeFEM's order and the numbers are those of the script, bit for bit);
+// the rest is element by element, in the script's arithmetic.
+#pragma once
+
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include "material.hpp"
+#include "span.hpp"
+
+namespace sma {
+
+// apply_latent(x, y): y = Q x (nodes from points); apply_interp(x, y): y = Interp x (points from
+// nodes). latent_rate = rho L / dt. chi, b_start, stress: one value per point; temperature, load:
+// one per heat node.
+template <class ApplyLatent, class ApplyInterp>
+void fraction_step_record(const ThermalLaw& law, double latent_rate, span<const double> chi,
+                          span<double> b_start, span<const double> temperature, ApplyLatent apply_latent,
+                          ApplyInterp apply_interp, span<double> load, span<double> stress) {
+  law.validate();
+  const std::size_t n = chi.size();
+  if (b_start.size() != n || stress.size() != n)
+    throw std::invalid_argument("fraction_step_record: chi, b_start and stress need one value per point");
+  if (load.size() != temperature.size())
+    throw std::invalid_argument("fraction_step_record: load and temperature need one value per heat node");
+  std::vector<double> change(n), at_points(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double b = std::abs(chi[i]);
+    change[i] = (b - b_start[i]) * latent_rate;  // dchi = b - bStart; dchi *= rho L / dt
+    b_start[i] = b;
+  }
+  apply_latent(change.data(), load.begin());
+  apply_interp(temperature.begin(), at_points.data());
+  for (std::size_t i = 0; i < n; ++i) stress[i] = law.alpha(at_points[i]) * chi[i];
+}
+
+// The area fractions [austenite, martensite 1, martensite 2] of signed martensite fractions chi
+// over points of the given areas (edp/solvers/dct.idp FractionsOfChi), in the script's arithmetic:
+// |chi|, chi + |chi| (2 chi where chi > 0) and |chi| - chi (-2 chi where chi < 0) each dotted with
+// the areas, summed in the points' order, over the areas' sum.
+inline void area_fractions(span<const double> chi, span<const double> area, double fractions[3]) {
+  if (area.size() != chi.size()) throw std::invalid_argument("area_fractions: one area per point");
+  double total = 0, latent = 0, m1 = 0, m2 = 0;
+  for (std::size_t i = 0; i < area.size(); ++i) total += area[i];
+  for (std::size_t i = 0; i < chi.size(); ++i) {
+    const double b = std::abs(chi[i]);
+    m1 += area[i] * (chi[i] + b);
+    m2 += area[i] * (b - chi[i]);
+    latent += area[i] * b;
+  }
+  fractions[1] = 0.5 * m1 / total;
+  fractions[2] = 0.5 * m2 / total;
+  fractions[0] = 1. - latent / total;
+}
+
+}  // namespace sma

@@ -1,0 +1,94 @@
+// The fraction model's step record (plugin/core/step_record.hpp) against the script's formulas
+// computed here independently, on small hand-made operators.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "core/step_record.hpp"
+
+namespace {
+
+// y = M x for a dense row-major M (rows x cols).
+struct Dense {
+  std::vector<double> a;
+  std::size_t rows, cols;
+  void operator()(const double* x, double* y) const {
+    for (std::size_t i = 0; i < rows; ++i) {
+      double s = 0;
+      for (std::size_t j = 0; j < cols; ++j) s += a[i * cols + j] * x[j];
+      y[i] = s;
+    }
+  }
+};
+
+const sma::ThermalLaw law{6500, 300, 12000, 237, 300};
+
+TEST(StepRecord, LoadStressAndFractionsAsTheScriptComputesThem) {
+  // 3 points, 2 heat nodes: Q (2 x 3) spreads a point's load over nodes, Interp (3 x 2) averages.
+  const Dense Q{{0.5, 0.25, 0.0, 0.5, 0.75, 1.0}, 2, 3};
+  const Dense interp{{1.0, 0.0, 0.5, 0.5, 0.0, 1.0}, 3, 2};
+  std::vector<double> chi = {0.25, -0.5, 0.0}, b = {0.0, 0.75, 0.0}, T = {250.0, 320.0};
+  std::vector<double> load(2), s(3);
+  const double rate = 6500.0 * 12000.0 / 0.1;
+  sma::fraction_step_record(law, rate, sma::span<const double>(chi.data(), 3), sma::span<double>(b),
+                            sma::span<const double>(T.data(), 2), Q, interp, sma::span<double>(load),
+                            sma::span<double>(s));
+  // b = |chi|; load = Q (|chi| - b_old) rate: changes 0.25, -0.25, 0
+  EXPECT_EQ(b, (std::vector<double>{0.25, 0.5, 0.0}));
+  EXPECT_DOUBLE_EQ(load[0], (0.5 * 0.25 - 0.25 * 0.25) * rate);
+  EXPECT_DOUBLE_EQ(load[1], (0.5 * 0.25 - 0.75 * 0.25) * rate);
+  // s = alpha(T at the point) chi: 250 K (alpha > 0), 285 K (alpha > 0), 320 K (above Tc: 0)
+  EXPECT_DOUBLE_EQ(s[0], 6500.0 * 300.0 * (300.0 - 250.0) * 0.25);
+  EXPECT_DOUBLE_EQ(s[1], 6500.0 * 300.0 * (300.0 - 285.0) * -0.5);
+  EXPECT_EQ(s[2], 0.0);
+}
+
+TEST(StepRecord, NoChangeNoLoad) {
+  // The fractions the last heat solve saw are the step's: no latent heat, whatever the operators.
+  const Dense Q{{2.0, 3.0}, 1, 2};
+  const Dense interp{{1.0}, 2, 1};
+  std::vector<double> chi = {-1.0, 0.5}, b = {1.0, 0.5}, T = {200.0}, load(1), s(2);
+  sma::fraction_step_record(law, 1e9, sma::span<const double>(chi.data(), 2), sma::span<double>(b),
+                            sma::span<const double>(T.data(), 1), Q, interp, sma::span<double>(load),
+                            sma::span<double>(s));
+  EXPECT_EQ(load[0], 0.0);
+  EXPECT_EQ(b, (std::vector<double>{1.0, 0.5}));
+}
+
+TEST(StepRecord, MismatchedSizesAndBadLawAreRefused) {
+  const Dense Q{{1.0}, 1, 1};
+  std::vector<double> chi = {0.5}, b = {0.0, 0.0}, T = {250.0}, load(1), s(1);
+  EXPECT_THROW(sma::fraction_step_record(law, 1.0, sma::span<const double>(chi.data(), 1), sma::span<double>(b),
+                                         sma::span<const double>(T.data(), 1), Q, Q, sma::span<double>(load),
+                                         sma::span<double>(s)),
+               std::invalid_argument);
+  b.resize(1);
+  const sma::ThermalLaw hot{6500, 300, 12000, 400, 300};  // T0 > Tc
+  EXPECT_THROW(sma::fraction_step_record(hot, 1.0, sma::span<const double>(chi.data(), 1), sma::span<double>(b),
+                                         sma::span<const double>(T.data(), 1), Q, Q, sma::span<double>(load),
+                                         sma::span<double>(s)),
+               std::invalid_argument);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(StepRecord, AreaFractionsOfSignedFractions) {
+  // 4 points: austenite, all martensite 1, half martensite 2, a quarter martensite 1.
+  std::vector<double> chi = {0.0, 1.0, -0.5, 0.25}, area = {1.0, 2.0, 4.0, 8.0};
+  double f[3];
+  sma::area_fractions(sma::span<const double>(chi.data(), 4), sma::span<const double>(area.data(), 4), f);
+  const double total = 15.0;
+  EXPECT_DOUBLE_EQ(f[1], (2.0 * 1.0 + 8.0 * 0.25) / total);  // martensite 1: 4 of 15
+  EXPECT_DOUBLE_EQ(f[2], (4.0 * 0.5) / total);               // martensite 2: 2 of 15
+  EXPECT_DOUBLE_EQ(f[0], 1.0 - 6.0 / total);                 // the rest austenite
+  EXPECT_NEAR(f[0] + f[1] + f[2], 1.0, 1e-15);
+  std::vector<double> shortArea = {1.0};
+  EXPECT_THROW(sma::area_fractions(sma::span<const double>(chi.data(), 4),
+                                   sma::span<const double>(shortArea.data(), 1), f),
+               std::invalid_argument);
+}
+
+}  // namespace
