@@ -103,6 +103,32 @@ class SpdFactor {
     if (ldlt_.permutationPinv().size()) xx = ldlt_.permutationPinv() * t;
     else xx = t;
   }
+  // forward() and backward() on the caller's work vector z, for a caller that solves many times
+  // (the step solver): no allocation once z has the size, the permutations by index, the same
+  // values (backward_in_place(forward_into(b)) is solve(b), operation for operation); z is
+  // overwritten by backward_in_place.
+  void forward_into(span<const double> b, Eigen::VectorXd& z) const {
+    check_size(b.size(), "right-hand side");
+    z.resize(n_);
+    const auto& perm = ldlt_.permutationP().indices();
+    if (perm.size())
+      for (int i = 0; i < n_; ++i) z[perm[i]] = b.begin()[i];  // z = P b
+    else
+      for (int i = 0; i < n_; ++i) z[i] = b.begin()[i];
+    ldlt_.matrixL().solveInPlace(z);
+  }
+  void backward_in_place(Eigen::VectorXd& z, span<double> x) const {
+    check_size((std::size_t)z.size(), "forward-solved vector");
+    check_size(x.size(), "solution");
+    const Eigen::VectorXd& d = ldlt_.vectorD();
+    for (int i = 0; i < n_; ++i) z[i] = (1.0 / d[i]) * z[i];  // D^-1 z, as Eigen's inverse diagonal product
+    ldlt_.matrixU().solveInPlace(z);
+    const auto& perm = ldlt_.permutationPinv().indices();
+    if (perm.size())
+      for (int i = 0; i < n_; ++i) x.begin()[perm[i]] = z[i];  // x = P' z
+    else
+      for (int i = 0; i < n_; ++i) x.begin()[i] = z[i];
+  }
   // X = A^-1 B for a block of right-hand sides.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const {
     check_size((std::size_t)b.rows(), "right-hand side block");

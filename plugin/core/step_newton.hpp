@@ -313,28 +313,71 @@ class StepSolver {
     StepState s;
     s.chi = chi;
     const Eigen::Index n = chi.size();
-    const Eigen::VectorXd beta = chi.cwiseAbs();
-    // Heat.
-    Eigen::VectorXd rhs = p_.heat_rhs + p_.heat_mask.cwiseProduct(p_.latent_scale * (p_.latent * (beta - p_.b_start)));
-    if (p_.dissipation > 0)  // the dissipated heat k |chi - chi_start| / dt, a source beside the latent heat
-      rhs += p_.heat_mask.cwiseProduct(p_.dissipation_scale * (p_.latent * (chi - p_.chi_start).cwiseAbs()));
-    s.T.resize(rhs.size());
+    // Heat: heat_rhs + mask .* (rho L / dt) latent (|chi| - b_start), the products summed as
+    // Eigen's sparse * dense products sum (column by column from 0; a scale on the product
+    // scales the matrix's values), into the solver's work vectors.
+    Eigen::VectorXd& rhs = work_.rhs;
+    const Eigen::Index nodes = p_.heat_rhs.size(), dofs = p_.force.size();
+    rhs.setZero(nodes);
+    const int* outer = p_.latent.outerIndexPtr();
+    const int* inner = p_.latent.innerIndexPtr();
+    const double* value = p_.latent.valuePtr();
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double x = std::fabs(chi[i]) - p_.b_start[i];
+      for (int e = outer[i]; e < outer[i + 1]; ++e) rhs[inner[e]] += (p_.latent_scale * value[e]) * x;
+    }
+    for (Eigen::Index j = 0; j < nodes; ++j) rhs[j] = p_.heat_rhs[j] + p_.heat_mask[j] * rhs[j];
+    if (p_.dissipation > 0) {  // the dissipated heat k |chi - chi_start| / dt, a source beside the latent heat
+      Eigen::VectorXd& source = work_.heat;
+      source.setZero(nodes);
+      for (Eigen::Index i = 0; i < n; ++i) {
+        const double x = std::fabs(chi[i] - p_.chi_start[i]);
+        for (int e = outer[i]; e < outer[i + 1]; ++e) source[inner[e]] += (p_.dissipation_scale * value[e]) * x;
+      }
+      for (Eigen::Index j = 0; j < nodes; ++j) rhs[j] += p_.heat_mask[j] * source[j];
+    }
+    s.T.resize(nodes);
     heat_solve(rhs, s.T);
-    const Eigen::VectorXd Tq = p_.interp * s.T;
+    // T at the points (interp T), the law's coefficients there.
+    Eigen::VectorXd& Tq = work_.points;
+    Tq.setZero(n);
+    outer = p_.interp.outerIndexPtr();
+    inner = p_.interp.innerIndexPtr();
+    value = p_.interp.valuePtr();
+    for (Eigen::Index j = 0; j < nodes; ++j) {
+      const double x = s.T[j];
+      for (int e = outer[j]; e < outer[j + 1]; ++e) Tq[inner[e]] += value[e] * x;
+    }
     s.alpha.resize(n);
     s.c.resize(n);
+    s.q.resize(n);
     for (Eigen::Index i = 0; i < n; ++i) {
       s.alpha[i] = p_.law.alpha(Tq[i]);
       s.c[i] = p_.law.c(Tq[i]) + (p_.threshold_offset.size() ? p_.threshold_offset[i] : 0.0);
+      s.q[i] = s.alpha[i] * s.alpha[i] / p_.laminate;
     }
-    s.q = s.alpha.cwiseProduct(s.alpha) / p_.laminate;
-    // Mechanics with contact.
-    Eigen::VectorXd mech = (p_.force + p_.load * s.alpha.cwiseProduct(chi)).cwiseProduct(p_.free);
+    // Mechanics with contact: (f + B (alpha chi)) .* free.
+    Eigen::VectorXd& mech = work_.mech;
+    mech.setZero(dofs);
+    outer = p_.load.outerIndexPtr();
+    inner = p_.load.innerIndexPtr();
+    value = p_.load.valuePtr();
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double x = s.alpha[i] * chi[i];
+      for (int e = outer[i]; e < outer[i + 1]; ++e) mech[inner[e]] += value[e] * x;
+    }
+    for (Eigen::Index j = 0; j < dofs; ++j) mech[j] = (p_.force[j] + mech[j]) * p_.free[j];
     s.r = r0;
     s.threshold = threshold0;
-    s.u.resize(mech.size());
+    s.u.resize(dofs);
     contact_solve(mech, s);
-    s.trace = (p_.load.transpose() * s.u).cwiseQuotient(p_.area);
+    // The trace (B' u) ./ area (Eigen's row-wise product: each sum from 0, added to 0).
+    s.trace.resize(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      double t = 0.0;
+      for (int e = outer[i]; e < outer[i + 1]; ++e) t += value[e] * s.u[inner[e]];
+      s.trace[i] = (0.0 + 1.0 * t) / p_.area[i];
+    }
     // The law.
     s.sign.resize(n);
     s.held.resize(n);
@@ -592,7 +635,8 @@ class StepSolver {
 
   void heat_solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) {
     ++stats_.heat_solves;
-    p_.heat->solve(span<const double>(rhs.data(), (std::size_t)rhs.size()), span<double>(x.data(), (std::size_t)x.size()));
+    p_.heat->forward_into(span<const double>(rhs.data(), (std::size_t)rhs.size()), work_.heat_z);
+    p_.heat->backward_in_place(work_.heat_z, span<double>(x.data(), (std::size_t)x.size()));
   }
 
   bool friction() const { return p_.contact && p_.mu.size() && p_.mu.maxCoeff() > 0; }
@@ -603,12 +647,13 @@ class StepSolver {
   void contact_solve(const Eigen::VectorXd& mech, StepState& s) {
     ++stats_.stiffness_solves;
     span<const double> rhs(mech.data(), (std::size_t)mech.size());
+    Eigen::VectorXd& z = work_.stiffness_z;
+    p_.stiffness->forward_into(rhs, z);
     if (!p_.contact) {
-      p_.stiffness->solve(rhs, span<double>(s.u.data(), (std::size_t)s.u.size()));
+      p_.stiffness->backward_in_place(z, span<double>(s.u.data(), (std::size_t)s.u.size()));
       return;
     }
     const DelassusFactor& d = *p_.contact;
-    Eigen::VectorXd z = p_.stiffness->forward(rhs);
     const Eigen::VectorXd q = contact_free_motion(d, contact_motion(d, z), step_detail::as_span(p_.gap),
                                                   step_detail::as_span(p_.slip_reference),
                                                   step_detail::as_span(p_.tangent_free));
@@ -630,8 +675,8 @@ class StepSolver {
                                  " iterations, relative change of g " + std::to_string(change) + " > tol " +
                                  std::to_string(p_.slip_tol));
     }
-    add_contact_load(d, s.r, z);
-    p_.stiffness->backward(z, span<double>(s.u.data(), (std::size_t)s.u.size()));
+    add_contact_load_sparse(d, s.r, z, work_.load);
+    p_.stiffness->backward_in_place(z, span<double>(s.u.data(), (std::size_t)s.u.size()));
   }
 
   bool tangential(Eigen::Index i) const {
@@ -700,29 +745,35 @@ class StepSolver {
   void contact_linear(const StepState& s, const Eigen::VectorXd& dmech, Eigen::VectorXd& du) {
     ++stats_.stiffness_solves;
     span<const double> rhs(dmech.data(), (std::size_t)dmech.size());
+    Eigen::VectorXd& z = work_.stiffness_z;
+    p_.stiffness->forward_into(rhs, z);
     if (!p_.contact) {
-      p_.stiffness->solve(rhs, span<double>(du.data(), (std::size_t)du.size()));
+      p_.stiffness->backward_in_place(z, span<double>(du.data(), (std::size_t)du.size()));
       return;
     }
     const DelassusFactor& d = *p_.contact;
-    Eigen::VectorXd z = p_.stiffness->forward(rhs);
     freeze_statuses(s);
     const Eigen::Index k = (Eigen::Index)s.moving.size();
     if (k > 0) {
-      const Eigen::VectorXd hu = contact_motion(d, z);
+      if (column_of_row_.empty()) {  // the column of Y standing for each contact row (-1: none)
+        column_of_row_.assign((std::size_t)d.w.rows(), -1);
+        for (std::size_t j = 0; j < d.rows.size(); ++j) column_of_row_[(std::size_t)d.rows[j]] = (int)j;
+      }
       Eigen::VectorXd b(k);
-      for (Eigen::Index a = 0; a < k; ++a) b[a] = -hu[s.moving[(std::size_t)a]];  // W dr = dq = -d(H u_free)
+      for (Eigen::Index a = 0; a < k; ++a)  // W dr = dq = -d(H u_free), on the moving rows only
+        b[a] = -contact_motion_at(d, column_of_row_[(std::size_t)s.moving[(std::size_t)a]], z);
       const Eigen::VectorXd x = s.statuses.solve(b);
-      Eigen::VectorXd dr = Eigen::VectorXd::Zero(p_.contact->w.rows());
+      Eigen::VectorXd& dr = work_.dr;
+      dr.setZero(p_.contact->w.rows());
       for (Eigen::Index a = 0; a < k; ++a) {
         const int row = s.moving[(std::size_t)a];
         dr[row] = x[a];
         if (row % 2 == 0 && s.slide[(std::size_t)(row / 2)] != 0.0)
           dr[row + 1] = s.slide[(std::size_t)(row / 2)] * p_.mu[row / 2] * x[a];
       }
-      add_contact_load(d, dr, z);
+      add_contact_load_sparse(d, dr, z, work_.load);
     }
-    p_.stiffness->backward(z, span<double>(du.data(), (std::size_t)du.size()));
+    p_.stiffness->backward_in_place(z, span<double>(du.data(), (std::size_t)du.size()));
   }
 
   // The force f = -dW/dbeta / area on point i of state s at fraction b, on the side of its held
@@ -1054,6 +1105,8 @@ class StepSolver {
   // Vectors of the products (force_derivative_on), kept over the step: no allocation per product.
   struct Workspace {
     Eigen::VectorXd heat, dT, dalpha, dc, ds, mech, du;
+    Eigen::VectorXd heat_z, stiffness_z, load, dr;  // the back-solves' and the contact load's
+    Eigen::VectorXd rhs, points;                      // evaluate's heat load and T at the points
   };
 
   const StepProblem& p_;
@@ -1062,6 +1115,7 @@ class StepSolver {
   Workspace work_;
   RowMajorMatrix interp_rows_;       // p_.interp by rows, made by the step's first product
   std::vector<Eigen::Index> all_;    // 0 .. n-1 (force_derivative's support)
+  std::vector<int> column_of_row_;   // contact row -> column of the Delassus factor's Y (-1: none)
 };
 
 // Solves the step (see the header); chi, r, threshold in/out; T, u out.
