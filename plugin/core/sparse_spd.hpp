@@ -74,6 +74,7 @@ class SpdFactor {
       throw std::invalid_argument("the matrix is not positive definite (a pivot of " + std::to_string(dmin) +
                                   "): a support missing, or a negative coefficient");
     n_ = (int)a.rows();
+    inverse_diagonal_ = ldlt_.vectorD().cwiseInverse();  // 1 / d_i, the values D^-1 z multiplies by
   }
   int size() const { return n_; }
   // x = A^-1 b (x and b may not alias).
@@ -120,8 +121,8 @@ class SpdFactor {
   void backward_in_place(Eigen::VectorXd& z, span<double> x) const {
     check_size((std::size_t)z.size(), "forward-solved vector");
     check_size(x.size(), "solution");
-    const Eigen::VectorXd& d = ldlt_.vectorD();
-    for (int i = 0; i < n_; ++i) z[i] = (1.0 / d[i]) * z[i];  // D^-1 z, as Eigen's inverse diagonal product
+    // D^-1 z as Eigen's inverse diagonal product forms it, (1 / d_i) z_i (vectorD() is a copy).
+    for (int i = 0; i < n_; ++i) z[i] = inverse_diagonal_[i] * z[i];
     ldlt_.matrixU().solveInPlace(z);
     const auto& perm = ldlt_.permutationPinv().indices();
     if (perm.size())
@@ -190,6 +191,7 @@ class SpdFactor {
   }
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt_;
   SparseMatrix pattern_;
+  Eigen::VectorXd inverse_diagonal_;
   bool analysed_ = false;
   int n_ = 0;
 };
