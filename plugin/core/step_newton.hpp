@@ -319,12 +319,16 @@ class StepSolver {
     Eigen::VectorXd& rhs = work_.rhs;
     const Eigen::Index nodes = p_.heat_rhs.size(), dofs = p_.force.size();
     rhs.setZero(nodes);
+    // (Local pointers: a store through rhs[] could alias the vectors' own members, which the
+    // loops would otherwise reload at every term.)
+    double* const rhs_data = rhs.data();
+    const double scale = p_.latent_scale;
     const int* outer = p_.latent.outerIndexPtr();
     const int* inner = p_.latent.innerIndexPtr();
     const double* value = p_.latent.valuePtr();
     for (Eigen::Index i = 0; i < n; ++i) {
       const double x = std::fabs(chi[i]) - p_.b_start[i];
-      for (int e = outer[i]; e < outer[i + 1]; ++e) rhs[inner[e]] += (p_.latent_scale * value[e]) * x;
+      for (int e = outer[i]; e < outer[i + 1]; ++e) rhs_data[inner[e]] += (scale * value[e]) * x;
     }
     for (Eigen::Index j = 0; j < nodes; ++j) rhs[j] = p_.heat_rhs[j] + p_.heat_mask[j] * rhs[j];
     if (p_.dissipation > 0) {  // the dissipated heat k |chi - chi_start| / dt, a source beside the latent heat
@@ -344,9 +348,10 @@ class StepSolver {
     outer = p_.interp.outerIndexPtr();
     inner = p_.interp.innerIndexPtr();
     value = p_.interp.valuePtr();
+    double* const tq = Tq.data();
     for (Eigen::Index j = 0; j < nodes; ++j) {
       const double x = s.T[j];
-      for (int e = outer[j]; e < outer[j + 1]; ++e) Tq[inner[e]] += value[e] * x;
+      for (int e = outer[j]; e < outer[j + 1]; ++e) tq[inner[e]] += value[e] * x;
     }
     s.alpha.resize(n);
     s.c.resize(n);
@@ -362,9 +367,10 @@ class StepSolver {
     outer = p_.load.outerIndexPtr();
     inner = p_.load.innerIndexPtr();
     value = p_.load.valuePtr();
+    double* const mech_data = mech.data();
     for (Eigen::Index i = 0; i < n; ++i) {
       const double x = s.alpha[i] * chi[i];
-      for (int e = outer[i]; e < outer[i + 1]; ++e) mech[inner[e]] += value[e] * x;
+      for (int e = outer[i]; e < outer[i + 1]; ++e) mech_data[inner[e]] += value[e] * x;
     }
     for (Eigen::Index j = 0; j < dofs; ++j) mech[j] = (p_.force[j] + mech[j]) * p_.free[j];
     s.r = r0;
@@ -373,9 +379,10 @@ class StepSolver {
     contact_solve(mech, s);
     // The trace (B' u) ./ area (Eigen's row-wise product: each sum from 0, added to 0).
     s.trace.resize(n);
+    const double* const u = s.u.data();
     for (Eigen::Index i = 0; i < n; ++i) {
       double t = 0.0;
-      for (int e = outer[i]; e < outer[i + 1]; ++e) t += value[e] * s.u[inner[e]];
+      for (int e = outer[i]; e < outer[i + 1]; ++e) t += value[e] * u[inner[e]];
       s.trace[i] = (0.0 + 1.0 * t) / p_.area[i];
     }
     // The law.
@@ -446,8 +453,10 @@ class StepSolver {
     ++stats_.products;
     const Eigen::Index n = s.chi.size(), nodes = p_.heat_rhs.size(), dofs = p_.force.size();
     const std::size_t k = sub.size();
+    const double scale = p_.latent_scale;
     // Heat: mask .* (latent (scale w)); with k the source scale w +- (k / dt) w.
     work_.heat.setZero(nodes);
+    double* const heat = work_.heat.data();  // (local pointers: see evaluate)
     const int* outer = p_.latent.outerIndexPtr();
     const int* inner = p_.latent.innerIndexPtr();
     const double* value = p_.latent.valuePtr();
@@ -457,24 +466,31 @@ class StepSolver {
       if (p_.dissipation > 0) {
         double source = p_.latent_scale * w;
         source += (upper[(std::size_t)i] ? -p_.dissipation_scale : p_.dissipation_scale) * w;
-        for (int e = outer[i]; e < outer[i + 1]; ++e) work_.heat[inner[e]] += value[e] * source;
+        for (int e = outer[i]; e < outer[i + 1]; ++e) heat[inner[e]] += value[e] * source;
       } else {
-        for (int e = outer[i]; e < outer[i + 1]; ++e) work_.heat[inner[e]] += (p_.latent_scale * value[e]) * w;
+        for (int e = outer[i]; e < outer[i + 1]; ++e) heat[inner[e]] += (scale * value[e]) * w;
       }
     }
     for (Eigen::Index j = 0; j < nodes; ++j) work_.heat[j] = p_.heat_mask[j] * work_.heat[j];
     work_.dT.resize(nodes);
     heat_solve(work_.heat, work_.dT);
     // T, alpha, c and the eigenstress change at rows.
-    if (interp_rows_.rows() != p_.interp.rows()) interp_rows_ = p_.interp;  // row-major: T at a point
+    if (interp_rows_.rows() != p_.interp.rows()) {  // row-major: T at a point, row by row
+      interp_rows_ = p_.interp;
+      interp_rows_.makeCompressed();
+    }
     work_.dalpha.resize(n);
     work_.dc.resize(n);
     work_.ds.resize(n);
     const double rhoa = p_.law.rho * p_.law.a, latent_slope = p_.law.rho * p_.law.latent / p_.law.T0;
+    const int* const row_outer = interp_rows_.outerIndexPtr();
+    const int* const row_inner = interp_rows_.innerIndexPtr();
+    const double* const row_value = interp_rows_.valuePtr();
+    const double* const dT = work_.dT.data();
     std::size_t a = 0;
     for (const Eigen::Index i : rows) {
       double dTq = 0.0;
-      for (RowMajorMatrix::InnerIterator it(interp_rows_, i); it; ++it) dTq += it.value() * work_.dT[it.index()];
+      for (int e = row_outer[i]; e < row_outer[i + 1]; ++e) dTq += row_value[e] * dT[row_inner[e]];
       const bool in_sub = a < k && sub[a] == i;
       const double w = in_sub ? w_sub[a] : 0.0;
       if (in_sub) ++a;
@@ -487,18 +503,20 @@ class StepSolver {
     outer = p_.load.outerIndexPtr();
     inner = p_.load.innerIndexPtr();
     value = p_.load.valuePtr();
+    double* const mech = work_.mech.data();
     for (const Eigen::Index i : rows) {
       const double ds = work_.ds[i];
-      for (int e = outer[i]; e < outer[i + 1]; ++e) work_.mech[inner[e]] += value[e] * ds;
+      for (int e = outer[i]; e < outer[i + 1]; ++e) mech[inner[e]] += value[e] * ds;
     }
     for (Eigen::Index j = 0; j < dofs; ++j) work_.mech[j] = work_.mech[j] * p_.free[j];
     work_.du.resize(dofs);
     contact_linear(s, work_.mech, work_.du);
     // The trace change (B' du) ./ area and the force's change at sub.
+    const double* const du = work_.du.data();
     for (std::size_t b = 0; b < k; ++b) {
       const Eigen::Index i = sub[b];
       double t = 0.0;
-      for (int e = outer[i]; e < outer[i + 1]; ++e) t += value[e] * work_.du[inner[e]];
+      for (int e = outer[i]; e < outer[i + 1]; ++e) t += value[e] * du[inner[e]];
       const double dtrace = (0.0 + 1.0 * t) / p_.area[i];  // as Eigen's row-major product: 0 + 1 t
       const double dalpha = work_.dalpha[i], beta = std::fabs(s.chi[i]);
       const double ddrive = dalpha * std::fabs(s.trace[i]) + s.alpha[i] * s.sign[i] * dtrace - work_.dc[i];
