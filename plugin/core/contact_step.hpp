@@ -54,6 +54,34 @@ inline void add_contact_load(const DelassusFactor& d, const Eigen::VectorXd& r, 
   z += d.y * reactions;
 }
 
+// add_contact_load for a caller that adds many loads (the step solver's products): the columns
+// of Y whose reaction is nonzero only, summed in the caller's work vector (n) and added to z, as
+// Eigen evaluates z += Y r (a zeroed temporary, then added): the same bits, no allocation.
+inline void add_contact_load_sparse(const DelassusFactor& d, const Eigen::VectorXd& r, Eigen::VectorXd& z,
+                                    Eigen::VectorXd& work) {
+  if (!(r.lpNorm<Eigen::Infinity>() > 0)) return;
+  work.setZero(z.size());
+  const int* outer = d.y.outerIndexPtr();
+  const int* inner = d.y.innerIndexPtr();
+  const double* value = d.y.valuePtr();
+  for (std::size_t j = 0; j < d.rows.size(); ++j) {
+    const double rj = r[d.rows[j]];
+    if (rj == 0.0) continue;  // its terms are exact zeros, which leave the (+0 started) sums as they are
+    for (int e = outer[j]; e < outer[j + 1]; ++e) work[inner[e]] += value[e] * rj;
+  }
+  z += work;
+}
+
+// The entry of contact_motion(d, z) at contact row `row` (column j of Y standing for it, -1 for
+// none: 0), as Eigen's product forms it (a sum from 0, added to 0).
+inline double contact_motion_at(const DelassusFactor& d, int column, const Eigen::VectorXd& z) {
+  if (column < 0) return 0.0;
+  double t = 0.0;
+  for (int e = d.y_scaled.outerIndexPtr()[column]; e < d.y_scaled.outerIndexPtr()[column + 1]; ++e)
+    t += d.y_scaled.valuePtr()[e] * z[d.y_scaled.innerIndexPtr()[e]];
+  return 0.0 + 1.0 * t;
+}
+
 struct ContactStepSettings {
   double omega = 1.88, tol = 1e-10;
   int maxit = 100000, polish = 10;

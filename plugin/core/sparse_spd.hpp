@@ -74,6 +74,7 @@ class SpdFactor {
       throw std::invalid_argument("the matrix is not positive definite (a pivot of " + std::to_string(dmin) +
                                   "): a support missing, or a negative coefficient");
     n_ = (int)a.rows();
+    inverse_diagonal_ = ldlt_.vectorD().cwiseInverse();  // 1 / d_i, the values D^-1 z multiplies by
   }
   int size() const { return n_; }
   // x = A^-1 b (x and b may not alias).
@@ -102,6 +103,32 @@ class SpdFactor {
     Eigen::Map<Eigen::VectorXd> xx(x.begin(), n_);
     if (ldlt_.permutationPinv().size()) xx = ldlt_.permutationPinv() * t;
     else xx = t;
+  }
+  // forward() and backward() on the caller's work vector z, for a caller that solves many times
+  // (the step solver): no allocation once z has the size, the permutations by index, the same
+  // values (backward_in_place(forward_into(b)) is solve(b), operation for operation); z is
+  // overwritten by backward_in_place.
+  void forward_into(span<const double> b, Eigen::VectorXd& z) const {
+    check_size(b.size(), "right-hand side");
+    z.resize(n_);
+    const auto& perm = ldlt_.permutationP().indices();
+    if (perm.size())
+      for (int i = 0; i < n_; ++i) z[perm[i]] = b.begin()[i];  // z = P b
+    else
+      for (int i = 0; i < n_; ++i) z[i] = b.begin()[i];
+    ldlt_.matrixL().solveInPlace(z);
+  }
+  void backward_in_place(Eigen::VectorXd& z, span<double> x) const {
+    check_size((std::size_t)z.size(), "forward-solved vector");
+    check_size(x.size(), "solution");
+    // D^-1 z as Eigen's inverse diagonal product forms it, (1 / d_i) z_i (vectorD() is a copy).
+    for (int i = 0; i < n_; ++i) z[i] = inverse_diagonal_[i] * z[i];
+    ldlt_.matrixU().solveInPlace(z);
+    const auto& perm = ldlt_.permutationPinv().indices();
+    if (perm.size())
+      for (int i = 0; i < n_; ++i) x.begin()[perm[i]] = z[i];  // x = P' z
+    else
+      for (int i = 0; i < n_; ++i) x.begin()[i] = z[i];
   }
   // X = A^-1 B for a block of right-hand sides.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const {
@@ -164,6 +191,7 @@ class SpdFactor {
   }
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt_;
   SparseMatrix pattern_;
+  Eigen::VectorXd inverse_diagonal_;
   bool analysed_ = false;
   int n_ = 0;
 };

@@ -150,10 +150,12 @@ struct StepState {
   Eigen::VectorXd r, threshold;  // contact reactions (n, t interleaved) and slip thresholds
   // Frozen contact statuses for the linearisation: the unknowns of the contact rows that move
   // (active normal rows, sticking tangential rows), the factorised system on them, the sliding
-  // nodes' direction (+-1, 0 for none).
-  std::vector<int> moving;
-  std::vector<double> slide;
-  Eigen::PartialPivLU<Eigen::MatrixXd> statuses;
+  // nodes' direction (+-1, 0 for none). Formed by the first product at this state (frozen), not
+  // by evaluate: most evaluated states are line-search trials that take no product.
+  mutable std::vector<int> moving;
+  mutable std::vector<double> slide;
+  mutable Eigen::PartialPivLU<Eigen::MatrixXd> statuses;
+  mutable bool frozen = false;
   double residual_norm = 0.0;
 };
 
@@ -185,13 +187,25 @@ GmresResult gmres(const Op& apply, const Eigen::VectorXd& b, double rtol, int ma
   if (n == 0 || beta == 0.0) return out;
   const int m = (int)std::min<Eigen::Index>(maxit, n);
   // H: the Arnoldi Hessenberg matrix (for the Ritz values); R: H rotated to upper triangular by
-  // the Givens rotations (cs, sn), g the rotated right side.
-  Eigen::MatrixXd V(n, m + 1), H = Eigen::MatrixXd::Zero(m + 1, m), R = Eigen::MatrixXd::Zero(m + 1, m);
-  Eigen::VectorXd cs = Eigen::VectorXd::Zero(m), sn = Eigen::VectorXd::Zero(m), g = Eigen::VectorXd::Zero(m + 1);
+  // the Givens rotations (cs, sn), g the rotated right side. Held for `cap` iterations and grown
+  // (doubled, the new entries zero) when the iterations reach it: most solves take a few tens of
+  // the m allowed, and zeroing two (m + 1) x m matrices per solve cost more than its products.
+  int cap = std::min(m, 16);
+  Eigen::MatrixXd V(n, cap + 1), H = Eigen::MatrixXd::Zero(cap + 1, cap), R = Eigen::MatrixXd::Zero(cap + 1, cap);
+  Eigen::VectorXd cs = Eigen::VectorXd::Zero(cap), sn = Eigen::VectorXd::Zero(cap), g = Eigen::VectorXd::Zero(cap + 1);
   V.col(0) = b / beta;
   g[0] = beta;
   int k = 0;
   for (; k < m; ++k) {
+    if (k == cap) {
+      cap = std::min(m, 2 * cap);
+      V.conservativeResize(Eigen::NoChange, cap + 1);
+      H.conservativeResizeLike(Eigen::MatrixXd::Zero(cap + 1, cap));
+      R.conservativeResizeLike(Eigen::MatrixXd::Zero(cap + 1, cap));
+      cs.conservativeResizeLike(Eigen::VectorXd::Zero(cap));
+      sn.conservativeResizeLike(Eigen::VectorXd::Zero(cap));
+      g.conservativeResizeLike(Eigen::VectorXd::Zero(cap + 1));
+    }
     Eigen::VectorXd w = apply(V.col(k));
     for (int j = 0; j <= k; ++j) {  // modified Gram-Schmidt
       H(j, k) = w.dot(V.col(j));
@@ -299,28 +313,78 @@ class StepSolver {
     StepState s;
     s.chi = chi;
     const Eigen::Index n = chi.size();
-    const Eigen::VectorXd beta = chi.cwiseAbs();
-    // Heat.
-    Eigen::VectorXd rhs = p_.heat_rhs + p_.heat_mask.cwiseProduct(p_.latent_scale * (p_.latent * (beta - p_.b_start)));
-    if (p_.dissipation > 0)  // the dissipated heat k |chi - chi_start| / dt, a source beside the latent heat
-      rhs += p_.heat_mask.cwiseProduct(p_.dissipation_scale * (p_.latent * (chi - p_.chi_start).cwiseAbs()));
-    s.T.resize(rhs.size());
+    // Heat: heat_rhs + mask .* (rho L / dt) latent (|chi| - b_start), the products summed as
+    // Eigen's sparse * dense products sum (column by column from 0; a scale on the product
+    // scales the matrix's values), into the solver's work vectors.
+    Eigen::VectorXd& rhs = work_.rhs;
+    const Eigen::Index nodes = p_.heat_rhs.size(), dofs = p_.force.size();
+    rhs.setZero(nodes);
+    // (Local pointers: a store through rhs[] could alias the vectors' own members, which the
+    // loops would otherwise reload at every term.)
+    double* const rhs_data = rhs.data();
+    const double scale = p_.latent_scale;
+    const int* outer = p_.latent.outerIndexPtr();
+    const int* inner = p_.latent.innerIndexPtr();
+    const double* value = p_.latent.valuePtr();
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double x = std::fabs(chi[i]) - p_.b_start[i];
+      for (int e = outer[i]; e < outer[i + 1]; ++e) rhs_data[inner[e]] += (scale * value[e]) * x;
+    }
+    for (Eigen::Index j = 0; j < nodes; ++j) rhs[j] = p_.heat_rhs[j] + p_.heat_mask[j] * rhs[j];
+    if (p_.dissipation > 0) {  // the dissipated heat k |chi - chi_start| / dt, a source beside the latent heat
+      Eigen::VectorXd& source = work_.heat;
+      source.setZero(nodes);
+      for (Eigen::Index i = 0; i < n; ++i) {
+        const double x = std::fabs(chi[i] - p_.chi_start[i]);
+        for (int e = outer[i]; e < outer[i + 1]; ++e) source[inner[e]] += (p_.dissipation_scale * value[e]) * x;
+      }
+      for (Eigen::Index j = 0; j < nodes; ++j) rhs[j] += p_.heat_mask[j] * source[j];
+    }
+    s.T.resize(nodes);
     heat_solve(rhs, s.T);
-    const Eigen::VectorXd Tq = p_.interp * s.T;
+    // T at the points (interp T), the law's coefficients there.
+    Eigen::VectorXd& Tq = work_.points;
+    Tq.setZero(n);
+    outer = p_.interp.outerIndexPtr();
+    inner = p_.interp.innerIndexPtr();
+    value = p_.interp.valuePtr();
+    double* const tq = Tq.data();
+    for (Eigen::Index j = 0; j < nodes; ++j) {
+      const double x = s.T[j];
+      for (int e = outer[j]; e < outer[j + 1]; ++e) tq[inner[e]] += value[e] * x;
+    }
     s.alpha.resize(n);
     s.c.resize(n);
+    s.q.resize(n);
     for (Eigen::Index i = 0; i < n; ++i) {
       s.alpha[i] = p_.law.alpha(Tq[i]);
       s.c[i] = p_.law.c(Tq[i]) + (p_.threshold_offset.size() ? p_.threshold_offset[i] : 0.0);
+      s.q[i] = s.alpha[i] * s.alpha[i] / p_.laminate;
     }
-    s.q = s.alpha.cwiseProduct(s.alpha) / p_.laminate;
-    // Mechanics with contact.
-    Eigen::VectorXd mech = (p_.force + p_.load * s.alpha.cwiseProduct(chi)).cwiseProduct(p_.free);
+    // Mechanics with contact: (f + B (alpha chi)) .* free.
+    Eigen::VectorXd& mech = work_.mech;
+    mech.setZero(dofs);
+    outer = p_.load.outerIndexPtr();
+    inner = p_.load.innerIndexPtr();
+    value = p_.load.valuePtr();
+    double* const mech_data = mech.data();
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double x = s.alpha[i] * chi[i];
+      for (int e = outer[i]; e < outer[i + 1]; ++e) mech_data[inner[e]] += value[e] * x;
+    }
+    for (Eigen::Index j = 0; j < dofs; ++j) mech[j] = (p_.force[j] + mech[j]) * p_.free[j];
     s.r = r0;
     s.threshold = threshold0;
-    s.u.resize(mech.size());
+    s.u.resize(dofs);
     contact_solve(mech, s);
-    s.trace = (p_.load.transpose() * s.u).cwiseQuotient(p_.area);
+    // The trace (B' u) ./ area (Eigen's row-wise product: each sum from 0, added to 0).
+    s.trace.resize(n);
+    const double* const u = s.u.data();
+    for (Eigen::Index i = 0; i < n; ++i) {
+      double t = 0.0;
+      for (int e = outer[i]; e < outer[i + 1]; ++e) t += value[e] * u[inner[e]];
+      s.trace[i] = (0.0 + 1.0 * t) / p_.area[i];
+    }
     // The law.
     s.sign.resize(n);
     s.held.resize(n);
@@ -354,36 +418,111 @@ class StepSolver {
   // the growing side of held, - on the reverting side (`upper`).
   Eigen::VectorXd force_derivative(const StepState& s, const Eigen::VectorXd& w,
                                    const std::vector<char>& upper) {
-    ++stats_.products;
     const Eigen::Index n = w.size();
-    Eigen::VectorXd dT(p_.heat_rhs.size());
-    if (p_.dissipation > 0) {
-      Eigen::VectorXd source = p_.latent_scale * w;
-      for (Eigen::Index i = 0; i < n; ++i) source[i] += (upper[i] ? -p_.dissipation_scale : p_.dissipation_scale) * w[i];
-      heat_solve(p_.heat_mask.cwiseProduct(p_.latent * source), dT);
-    } else {
-      heat_solve(p_.heat_mask.cwiseProduct(p_.latent_scale * (p_.latent * w)), dT);
+    if (all_.size() != (std::size_t)n) {
+      all_.resize((std::size_t)n);
+      for (Eigen::Index i = 0; i < n; ++i) all_[(std::size_t)i] = i;
     }
-    const Eigen::VectorXd dTq = p_.interp * dT;
-    Eigen::VectorXd dalpha(n), dc(n), ds(n);
-    const double rhoa = p_.law.rho * p_.law.a, latent_slope = p_.law.rho * p_.law.latent / p_.law.T0;
-    for (Eigen::Index i = 0; i < n; ++i) {
-      dalpha[i] = s.alpha[i] > 0 ? -rhoa * dTq[i] : 0.0;
-      dc[i] = latent_slope * dTq[i];
-      ds[i] = dalpha[i] * s.chi[i] + s.alpha[i] * s.sign[i] * w[i];
-    }
-    const Eigen::VectorXd dmech = (p_.load * ds).cwiseProduct(p_.free);
-    Eigen::VectorXd du(dmech.size());
-    contact_linear(s, dmech, du);
-    const Eigen::VectorXd dtrace = (p_.load.transpose() * du).cwiseQuotient(p_.area);
-    const Eigen::VectorXd beta = s.chi.cwiseAbs();
     Eigen::VectorXd out(n);
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const double ddrive = dalpha[i] * std::fabs(s.trace[i]) + s.alpha[i] * s.sign[i] * dtrace[i] - dc[i];
-      const double dq = 2.0 * s.alpha[i] * dalpha[i] / p_.laminate;
-      out[i] = ddrive - s.q[i] * w[i] - dq * beta[i] + (upper[i] ? dq : 0.0);
-    }
+    force_derivative_on(s, all_, all_, w.data(), upper, out.data());
     return out;
+  }
+
+  // The points a product along w needs when w is zero off `sub` (increasing) and only the
+  // product's entries on sub are read: sub and the transformed points (chi != 0), the only ones
+  // whose eigenstress (alpha chi) changes; increasing.
+  std::vector<Eigen::Index> product_support(const StepState& s, const std::vector<Eigen::Index>& sub) const {
+    std::vector<Eigen::Index> rows;
+    std::size_t a = 0;
+    for (Eigen::Index i = 0; i < s.chi.size(); ++i) {
+      const bool in_sub = a < sub.size() && sub[a] == i;
+      if (in_sub) ++a;
+      if (in_sub || s.chi[i] != 0.0) rows.push_back(i);
+    }
+    return rows;
+  }
+
+  // force_derivative's entries on `sub` (increasing) along w, zero off sub (w_sub[a] = w at
+  // sub[a]), into df_sub[a]; `rows`: product_support(s, sub). The same operations in the same
+  // order as on the full vectors, on the entries that can be nonzero or are read: the latent
+  // load over sub's columns, T at rows, the eigenstress load over rows' columns (the others
+  // add exact zeros), the trace change at sub: the same bits.
+  void force_derivative_on(const StepState& s, const std::vector<Eigen::Index>& sub,
+                           const std::vector<Eigen::Index>& rows, const double* w_sub,
+                           const std::vector<char>& upper, double* df_sub) {
+    ++stats_.products;
+    const Eigen::Index n = s.chi.size(), nodes = p_.heat_rhs.size(), dofs = p_.force.size();
+    const std::size_t k = sub.size();
+    const double scale = p_.latent_scale;
+    // Heat: mask .* (latent (scale w)); with k the source scale w +- (k / dt) w.
+    work_.heat.setZero(nodes);
+    double* const heat = work_.heat.data();  // (local pointers: see evaluate)
+    const int* outer = p_.latent.outerIndexPtr();
+    const int* inner = p_.latent.innerIndexPtr();
+    const double* value = p_.latent.valuePtr();
+    for (std::size_t a = 0; a < k; ++a) {
+      const Eigen::Index i = sub[a];
+      const double w = w_sub[a];
+      if (p_.dissipation > 0) {
+        double source = p_.latent_scale * w;
+        source += (upper[(std::size_t)i] ? -p_.dissipation_scale : p_.dissipation_scale) * w;
+        for (int e = outer[i]; e < outer[i + 1]; ++e) heat[inner[e]] += value[e] * source;
+      } else {
+        for (int e = outer[i]; e < outer[i + 1]; ++e) heat[inner[e]] += (scale * value[e]) * w;
+      }
+    }
+    for (Eigen::Index j = 0; j < nodes; ++j) work_.heat[j] = p_.heat_mask[j] * work_.heat[j];
+    work_.dT.resize(nodes);
+    heat_solve(work_.heat, work_.dT);
+    // T, alpha, c and the eigenstress change at rows.
+    if (interp_rows_.rows() != p_.interp.rows()) {  // row-major: T at a point, row by row
+      interp_rows_ = p_.interp;
+      interp_rows_.makeCompressed();
+    }
+    work_.dalpha.resize(n);
+    work_.dc.resize(n);
+    work_.ds.resize(n);
+    const double rhoa = p_.law.rho * p_.law.a, latent_slope = p_.law.rho * p_.law.latent / p_.law.T0;
+    const int* const row_outer = interp_rows_.outerIndexPtr();
+    const int* const row_inner = interp_rows_.innerIndexPtr();
+    const double* const row_value = interp_rows_.valuePtr();
+    const double* const dT = work_.dT.data();
+    std::size_t a = 0;
+    for (const Eigen::Index i : rows) {
+      double dTq = 0.0;
+      for (int e = row_outer[i]; e < row_outer[i + 1]; ++e) dTq += row_value[e] * dT[row_inner[e]];
+      const bool in_sub = a < k && sub[a] == i;
+      const double w = in_sub ? w_sub[a] : 0.0;
+      if (in_sub) ++a;
+      work_.dalpha[i] = s.alpha[i] > 0 ? -rhoa * dTq : 0.0;
+      work_.dc[i] = latent_slope * dTq;
+      work_.ds[i] = work_.dalpha[i] * s.chi[i] + s.alpha[i] * s.sign[i] * w;
+    }
+    // Mechanics: (B ds) .* free, the linearised contact step.
+    work_.mech.setZero(dofs);
+    outer = p_.load.outerIndexPtr();
+    inner = p_.load.innerIndexPtr();
+    value = p_.load.valuePtr();
+    double* const mech = work_.mech.data();
+    for (const Eigen::Index i : rows) {
+      const double ds = work_.ds[i];
+      for (int e = outer[i]; e < outer[i + 1]; ++e) mech[inner[e]] += value[e] * ds;
+    }
+    for (Eigen::Index j = 0; j < dofs; ++j) work_.mech[j] = work_.mech[j] * p_.free[j];
+    work_.du.resize(dofs);
+    contact_linear(s, work_.mech, work_.du);
+    // The trace change (B' du) ./ area and the force's change at sub.
+    const double* const du = work_.du.data();
+    for (std::size_t b = 0; b < k; ++b) {
+      const Eigen::Index i = sub[b];
+      double t = 0.0;
+      for (int e = outer[i]; e < outer[i + 1]; ++e) t += value[e] * du[inner[e]];
+      const double dtrace = (0.0 + 1.0 * t) / p_.area[i];  // as Eigen's row-major product: 0 + 1 t
+      const double dalpha = work_.dalpha[i], beta = std::fabs(s.chi[i]);
+      const double ddrive = dalpha * std::fabs(s.trace[i]) + s.alpha[i] * s.sign[i] * dtrace - work_.dc[i];
+      const double dq = 2.0 * s.alpha[i] * dalpha / p_.laminate;
+      df_sub[b] = ddrive - s.q[i] * w_sub[b] - dq * beta + (upper[(std::size_t)i] ? dq : 0.0);
+    }
   }
 
   // Solves the step from chi (in/out), contact reactions r and thresholds (in/out); T and u
@@ -514,23 +653,25 @@ class StepSolver {
 
   void heat_solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) {
     ++stats_.heat_solves;
-    p_.heat->solve(span<const double>(rhs.data(), (std::size_t)rhs.size()), span<double>(x.data(), (std::size_t)x.size()));
+    p_.heat->forward_into(span<const double>(rhs.data(), (std::size_t)rhs.size()), work_.heat_z);
+    p_.heat->backward_in_place(work_.heat_z, span<double>(x.data(), (std::size_t)x.size()));
   }
 
   bool friction() const { return p_.contact && p_.mu.size() && p_.mu.maxCoeff() > 0; }
 
   // Signorini-Coulomb on the condensed problem for the right side `mech`: one forward solve, the
   // PSOR (inside the slip-threshold fixed point g = mu r_n when there is friction), one backward
-  // solve; then the statuses for the linearisation.
+  // solve (the statuses for the linearisation: freeze_statuses, at the first product).
   void contact_solve(const Eigen::VectorXd& mech, StepState& s) {
     ++stats_.stiffness_solves;
     span<const double> rhs(mech.data(), (std::size_t)mech.size());
+    Eigen::VectorXd& z = work_.stiffness_z;
+    p_.stiffness->forward_into(rhs, z);
     if (!p_.contact) {
-      p_.stiffness->solve(rhs, span<double>(s.u.data(), (std::size_t)s.u.size()));
+      p_.stiffness->backward_in_place(z, span<double>(s.u.data(), (std::size_t)s.u.size()));
       return;
     }
     const DelassusFactor& d = *p_.contact;
-    Eigen::VectorXd z = p_.stiffness->forward(rhs);
     const Eigen::VectorXd q = contact_free_motion(d, contact_motion(d, z), step_detail::as_span(p_.gap),
                                                   step_detail::as_span(p_.slip_reference),
                                                   step_detail::as_span(p_.tangent_free));
@@ -552,9 +693,8 @@ class StepSolver {
                                  " iterations, relative change of g " + std::to_string(change) + " > tol " +
                                  std::to_string(p_.slip_tol));
     }
-    add_contact_load(d, s.r, z);
-    p_.stiffness->backward(z, span<double>(s.u.data(), (std::size_t)s.u.size()));
-    freeze_statuses(s);
+    add_contact_load_sparse(d, s.r, z, work_.load);
+    p_.stiffness->backward_in_place(z, span<double>(s.u.data(), (std::size_t)s.u.size()));
   }
 
   bool tangential(Eigen::Index i) const {
@@ -591,7 +731,9 @@ class StepSolver {
   // The contact rows that move under a small change of the load, at the statuses of s: active
   // normal rows (r_n > 0) and sticking tangential rows (|r_t| < g) keep their motion at zero;
   // a sliding node's r_t follows its r_n (r_t = +-mu r_n); the others stay at zero.
-  void freeze_statuses(StepState& s) const {
+  void freeze_statuses(const StepState& s) const {
+    if (s.frozen) return;
+    s.frozen = true;
     const Eigen::MatrixXd& W = p_.contact->w;
     const Eigen::Index m = p_.gap.size();
     s.moving.clear();
@@ -621,28 +763,35 @@ class StepSolver {
   void contact_linear(const StepState& s, const Eigen::VectorXd& dmech, Eigen::VectorXd& du) {
     ++stats_.stiffness_solves;
     span<const double> rhs(dmech.data(), (std::size_t)dmech.size());
+    Eigen::VectorXd& z = work_.stiffness_z;
+    p_.stiffness->forward_into(rhs, z);
     if (!p_.contact) {
-      p_.stiffness->solve(rhs, span<double>(du.data(), (std::size_t)du.size()));
+      p_.stiffness->backward_in_place(z, span<double>(du.data(), (std::size_t)du.size()));
       return;
     }
     const DelassusFactor& d = *p_.contact;
-    Eigen::VectorXd z = p_.stiffness->forward(rhs);
+    freeze_statuses(s);
     const Eigen::Index k = (Eigen::Index)s.moving.size();
     if (k > 0) {
-      const Eigen::VectorXd hu = contact_motion(d, z);
+      if (column_of_row_.empty()) {  // the column of Y standing for each contact row (-1: none)
+        column_of_row_.assign((std::size_t)d.w.rows(), -1);
+        for (std::size_t j = 0; j < d.rows.size(); ++j) column_of_row_[(std::size_t)d.rows[j]] = (int)j;
+      }
       Eigen::VectorXd b(k);
-      for (Eigen::Index a = 0; a < k; ++a) b[a] = -hu[s.moving[(std::size_t)a]];  // W dr = dq = -d(H u_free)
+      for (Eigen::Index a = 0; a < k; ++a)  // W dr = dq = -d(H u_free), on the moving rows only
+        b[a] = -contact_motion_at(d, column_of_row_[(std::size_t)s.moving[(std::size_t)a]], z);
       const Eigen::VectorXd x = s.statuses.solve(b);
-      Eigen::VectorXd dr = Eigen::VectorXd::Zero(p_.contact->w.rows());
+      Eigen::VectorXd& dr = work_.dr;
+      dr.setZero(p_.contact->w.rows());
       for (Eigen::Index a = 0; a < k; ++a) {
         const int row = s.moving[(std::size_t)a];
         dr[row] = x[a];
         if (row % 2 == 0 && s.slide[(std::size_t)(row / 2)] != 0.0)
           dr[row + 1] = s.slide[(std::size_t)(row / 2)] * p_.mu[row / 2] * x[a];
       }
-      add_contact_load(d, dr, z);
+      add_contact_load_sparse(d, dr, z, work_.load);
     }
-    p_.stiffness->backward(z, span<double>(du.data(), (std::size_t)du.size()));
+    p_.stiffness->backward_in_place(z, span<double>(du.data(), (std::size_t)du.size()));
   }
 
   // The force f = -dW/dbeta / area on point i of state s at fraction b, on the side of its held
@@ -758,12 +907,11 @@ class StepSolver {
         scale[a] = s.q[sub[(std::size_t)a]];
         rhs[a] = model[sub[(std::size_t)a]] / scale[a];
       }
+      const std::vector<Eigen::Index> support = product_support(s, sub);
       auto apply = [&](const Eigen::VectorXd& x) {
-        Eigen::VectorXd full = Eigen::VectorXd::Zero(n);
-        for (Eigen::Index a = 0; a < k; ++a) full[sub[(std::size_t)a]] = x[a];
-        const Eigen::VectorXd df = force_derivative(s, full, cl.upper);
         Eigen::VectorXd out(k);
-        for (Eigen::Index a = 0; a < k; ++a) out[a] = -df[sub[(std::size_t)a]] / scale[a];
+        force_derivative_on(s, sub, support, x.data(), cl.upper, out.data());
+        for (Eigen::Index a = 0; a < k; ++a) out[a] = -out[a] / scale[a];
         return out;
       };
       // No more accuracy than the step's tolerance needs (the residual of the linearised step,
@@ -971,9 +1119,21 @@ class StepSolver {
     return out;
   }
 
+  using RowMajorMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
+  // Vectors of the products (force_derivative_on), kept over the step: no allocation per product.
+  struct Workspace {
+    Eigen::VectorXd heat, dT, dalpha, dc, ds, mech, du;
+    Eigen::VectorXd heat_z, stiffness_z, load, dr;  // the back-solves' and the contact load's
+    Eigen::VectorXd rhs, points;                      // evaluate's heat load and T at the points
+  };
+
   const StepProblem& p_;
   StepResult& stats_;
   RecycledSpace recycled_;  // over the step's linearised solves (newton_direction)
+  Workspace work_;
+  RowMajorMatrix interp_rows_;       // p_.interp by rows, made by the step's first product
+  std::vector<Eigen::Index> all_;    // 0 .. n-1 (force_derivative's support)
+  std::vector<int> column_of_row_;   // contact row -> column of the Delassus factor's Y (-1: none)
 };
 
 // Solves the step (see the header); chi, r, threshold in/out; T, u out.

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <cmath>
 #include <random>
 #include <string>
 #include <vector>
@@ -73,6 +74,32 @@ TEST(SparseSpd, ForwardThenBackwardIsTheSolve) {
   f.backward(f.forward(b), halves);
   for (int i = 0; i < a.rows(); ++i) ASSERT_EQ(halves[i], x[i]) << "dof " << i;
   EXPECT_THROW(f.backward(Eigen::VectorXd::Zero(a.rows() + 1), halves), std::invalid_argument);
+}
+
+// The halves on a caller's work vector (the step solver's) give solve() bit for bit, also
+// with signed zeros in the right side (Dirichlet rows of a masked load).
+TEST(SparseSpd, WorkVectorHalvesAreTheSolve) {
+  std::mt19937 rng(3);
+  const SparseMatrix a = grid_laplacian(9, 8, 0.05);
+  sma::SpdFactor f;
+  f.factorize(a);
+  Eigen::VectorXd rhs = random_vector(a.rows(), rng);
+  rhs[0] = -0.0, rhs[5] = 0.0, rhs[a.rows() - 1] = -0.0;
+  const std::vector<double> b = to_std(rhs);
+  std::vector<double> x(a.rows()), halves(a.rows());
+  f.solve(b, x);
+  Eigen::VectorXd z(3);  // resized by forward_into
+  f.forward_into(b, z);
+  const Eigen::VectorXd reference = f.forward(b);
+  for (int i = 0; i < a.rows(); ++i) ASSERT_EQ(std::signbit(z[i]), std::signbit(reference[i])) << "dof " << i;
+  ASSERT_EQ(z, reference);
+  f.backward_in_place(z, halves);
+  for (int i = 0; i < a.rows(); ++i) {
+    ASSERT_EQ(halves[i], x[i]) << "dof " << i;
+    ASSERT_EQ(std::signbit(halves[i]), std::signbit(x[i])) << "dof " << i;
+  }
+  Eigen::VectorXd wrong = Eigen::VectorXd::Zero(a.rows() + 1);
+  EXPECT_THROW(f.backward_in_place(wrong, halves), std::invalid_argument);
 }
 
 // A Dirichlet row marked by FreeFEM's tgv (1e30 on the diagonal, its couplings kept): its unknown
@@ -249,6 +276,50 @@ TEST(ContactStep, SolvesTheCondensedProblem) {
 // The step's one forward and one backward solve against its definition written out with full
 // solves: u_free = K^-1 rhs, q from H u_free, PSOR on W, u = K^-1 (rhs + S H' r). With friction
 // (all rows of H formed, sliding and sticking nodes) and supported dofs on the contact rows.
+// The step solver's contact load and motion (add_contact_load_sparse, contact_motion_at) give
+// add_contact_load's and contact_motion's bits: reactions zero on some rows (their columns
+// skipped), signed zeros in z (kept or not as Eigen's z += Y r keeps them).
+TEST(ContactStep, SparseLoadAndMotionHaveTheWholeBits) {
+  SparseMatrix a = grid_laplacian(10, 8, 0.03);
+  const int n = a.rows(), m = 5;
+  const int nodes[m] = {2, 17, 33, 50, 66};
+  std::vector<Eigen::Triplet<double, int>> t;
+  for (int i = 0; i < m; ++i) {
+    t.emplace_back(2 * i, nodes[i], 0.8);
+    t.emplace_back(2 * i, nodes[i] + 1, 0.6);
+    t.emplace_back(2 * i + 1, nodes[i], -0.6);
+    t.emplace_back(2 * i + 1, nodes[i] + 1, 0.8);
+  }
+  SparseMatrix h(2 * m, n);
+  h.setFromTriplets(t.begin(), t.end());
+  std::vector<double> free(n, 1.0);
+  sma::SpdFactor k;
+  k.factorize(a);
+  std::mt19937 rng(5);
+  for (const bool normal_only : {false, true}) {
+    const sma::DelassusFactor c = sma::delassus_factor(k, h, free, normal_only);
+    Eigen::VectorXd z = random_vector(n, rng);
+    for (int i = 0; i < n; i += 7) z[i] = -0.0;
+    Eigen::VectorXd r = Eigen::VectorXd::Zero(2 * m);
+    r[0] = 1.5, r[1] = -0.25, r[4] = 2.0, r[8] = -0.0;  // rows 2, 3, 6, ... carry nothing
+    Eigen::VectorXd whole = z, sparse = z, work;
+    sma::add_contact_load(c, r, whole);
+    sma::add_contact_load_sparse(c, r, sparse, work);
+    for (int i = 0; i < n; ++i) {
+      ASSERT_EQ(sparse[i], whole[i]) << "dof " << i;
+      ASSERT_EQ(std::signbit(sparse[i]), std::signbit(whole[i])) << "dof " << i;
+    }
+    std::vector<int> column(2 * m, -1);
+    for (std::size_t j = 0; j < c.rows.size(); ++j) column[(std::size_t)c.rows[j]] = (int)j;
+    const Eigen::VectorXd motion = sma::contact_motion(c, z);
+    for (int row = 0; row < 2 * m; ++row) {
+      const double at = sma::contact_motion_at(c, column[(std::size_t)row], z);
+      ASSERT_EQ(at, motion[row]) << "row " << row;
+      ASSERT_EQ(std::signbit(at), std::signbit(motion[row])) << "row " << row;
+    }
+  }
+}
+
 TEST(ContactStep, OneBackSolveEqualsTheTwoSolveDefinition) {
   SparseMatrix a = grid_laplacian(10, 8, 0.03);
   const int n = a.rows(), m = 5;

@@ -131,6 +131,102 @@ TEST(StepNewton, LinearisationMatchesFiniteDifferences) {
   EXPECT_LE((fd - analytic).lpNorm<Eigen::Infinity>(), 1e-6 * analytic.lpNorm<Eigen::Infinity>());
 }
 
+// force_derivative as it was written on whole vectors with Eigen's products (the reference of
+// the bits), without contact: the mechanics one stiffness solve.
+Eigen::VectorXd force_derivative_reference(const sma::StepProblem& p, const sma::StepState& s, const Eigen::VectorXd& w,
+                                           const std::vector<char>& upper) {
+  const Eigen::Index n = w.size();
+  Eigen::VectorXd dT(p.heat_rhs.size()), rhs;
+  if (p.dissipation > 0) {
+    Eigen::VectorXd source = p.latent_scale * w;
+    for (Eigen::Index i = 0; i < n; ++i) source[i] += (upper[i] ? -p.dissipation_scale : p.dissipation_scale) * w[i];
+    rhs = p.heat_mask.cwiseProduct(p.latent * source);
+  } else {
+    rhs = p.heat_mask.cwiseProduct(p.latent_scale * (p.latent * w));
+  }
+  p.heat->solve(sma::span<const double>(rhs.data(), (std::size_t)rhs.size()),
+                sma::span<double>(dT.data(), (std::size_t)dT.size()));
+  const Eigen::VectorXd dTq = p.interp * dT;
+  Eigen::VectorXd dalpha(n), dc(n), ds(n);
+  const double rhoa = p.law.rho * p.law.a, latent_slope = p.law.rho * p.law.latent / p.law.T0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    dalpha[i] = s.alpha[i] > 0 ? -rhoa * dTq[i] : 0.0;
+    dc[i] = latent_slope * dTq[i];
+    ds[i] = dalpha[i] * s.chi[i] + s.alpha[i] * s.sign[i] * w[i];
+  }
+  const Eigen::VectorXd dmech = (p.load * ds).cwiseProduct(p.free);
+  Eigen::VectorXd du(dmech.size());
+  p.stiffness->solve(sma::span<const double>(dmech.data(), (std::size_t)dmech.size()),
+                     sma::span<double>(du.data(), (std::size_t)du.size()));
+  const Eigen::VectorXd dtrace = (p.load.transpose() * du).cwiseQuotient(p.area);
+  const Eigen::VectorXd beta = s.chi.cwiseAbs();
+  Eigen::VectorXd out(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double ddrive = dalpha[i] * std::fabs(s.trace[i]) + s.alpha[i] * s.sign[i] * dtrace[i] - dc[i];
+    const double dq = 2.0 * s.alpha[i] * dalpha[i] / p.laminate;
+    out[i] = ddrive - s.q[i] * w[i] - dq * beta[i] + (upper[i] ? dq : 0.0);
+  }
+  return out;
+}
+
+// The product on a subset of the points (force_derivative_on: what GMRES applies) gives the
+// same bits as force_derivative on the whole vector, and force_derivative the same bits as its
+// whole-vector Eigen form: the solver's outputs do not depend on the restriction. With and
+// without the dissipation's heat, at a partly transformed state (the transformed points outside
+// the subset load the mechanics through alpha's change; the untransformed ones do not).
+TEST(StepNewton, RestrictedProductHasTheWholeProductsBits) {
+  RadialSleeve rs;
+  rs.build();
+  sma::StepSettings set;
+  Eigen::VectorXd chi_mid;
+  sma::StepProblem p_mid;
+  bool found = false;
+  run(rs, set, [&](const sma::StepProblem& p, const Eigen::VectorXd& chi, const Eigen::VectorXd&,
+                   const Eigen::VectorXd&, const Eigen::VectorXd&) {
+    int partial = 0, none = 0;
+    for (Eigen::Index e = 0; e < chi.size(); ++e) {
+      partial += std::fabs(chi[e]) > 0 && std::fabs(chi[e]) < 1;
+      none += chi[e] == 0.0;
+    }
+    if (!found && partial >= 2 && none >= 3) found = true, chi_mid = chi, p_mid = p;
+  });
+  ASSERT_TRUE(found);
+  p_mid.contact = nullptr;  // the reference's mechanics: one stiffness solve
+  const Eigen::Index n = chi_mid.size();
+  std::mt19937 gen(11);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  for (const double k : {0.0, 2e5}) {
+    sma::StepProblem p = p_mid;
+    p.dissipation = k;
+    p.dissipation_scale = k / 0.5;
+    sma::StepResult stats;
+    sma::StepSolver solver(p, stats);
+    const Eigen::VectorXd r0 = Eigen::VectorXd::Zero(2), g0 = Eigen::VectorXd::Zero(1);
+    const sma::StepState s = solver.evaluate(chi_mid, r0, g0);
+    // Every third point and the partly transformed ones: the transformed points outside it too.
+    std::vector<Eigen::Index> sub;
+    for (Eigen::Index e = 0; e < n; ++e)
+      if (e % 3 == 0 || (std::fabs(chi_mid[e]) > 0 && std::fabs(chi_mid[e]) < 1)) sub.push_back(e);
+    const std::vector<Eigen::Index> rows = solver.product_support(s, sub);
+    ASSERT_GT(rows.size(), sub.size());
+    ASSERT_LT((Eigen::Index)rows.size(), n);
+    Eigen::VectorXd w = Eigen::VectorXd::Zero(n), w_sub((Eigen::Index)sub.size());
+    std::vector<char> upper((std::size_t)n, 0);
+    for (std::size_t a = 0; a < sub.size(); ++a) {
+      w_sub[(Eigen::Index)a] = w[sub[a]] = unit(gen);
+      upper[(std::size_t)sub[a]] = a % 2;
+    }
+    const Eigen::VectorXd whole = solver.force_derivative(s, w, upper);
+    const Eigen::VectorXd reference = force_derivative_reference(p, s, w, upper);
+    Eigen::VectorXd restricted((Eigen::Index)sub.size());
+    solver.force_derivative_on(s, sub, rows, w_sub.data(), upper, restricted.data());
+    ASSERT_GT(whole.lpNorm<Eigen::Infinity>(), 0.0);
+    for (Eigen::Index i = 0; i < n; ++i) EXPECT_EQ(whole[i], reference[i]) << "point " << i << ", k " << k;
+    for (std::size_t a = 0; a < sub.size(); ++a)
+      EXPECT_EQ(restricted[(Eigen::Index)a], whole[sub[a]]) << "point " << sub[a] << ", k " << k;
+  }
+}
+
 TEST(StepNewton, EveryStepSolvesTheLawTheHeatAndTheContact) {
   RadialSleeve rs;
   rs.build();
