@@ -70,6 +70,14 @@ def main():
         two = ff("edp/scenes/sleeve-radial.edp", "-checkonly", "2", "-out", out)
         check(two.returncode == 1 and "error: -checkonly '2' must be 1" in two.stdout + two.stderr,
               f"-checkonly 2 is refused: exit {two.returncode}")
+        # -checkonly 0 is a run, as without the option (and tools/ff keeps its output streaming)
+        zero = ff("edp/scenes/sleeve-radial.edp", "-checkonly", "0", "-steps", "3", "-out", out + "-run")
+        check(zero.returncode == 0 and os.path.exists(os.path.join(out + "-run", "summary.json")),
+              f"-checkonly 0 runs the scene: exit {zero.returncode}")
+        # the exit trailer FreeFEM prints after exit(0) is not shown (tools/ff drops it, as for -help)
+        quiet = ff("edp/scenes/sleeve-radial.edp", "-checkonly", "1", "-out", out)
+        check("err code 0" not in quiet.stdout + quiet.stderr and "current line" not in quiet.stdout + quiet.stderr,
+              "-checkonly 1's output ends with the script's line (no FreeFEM exit trailer)")
     record("check_only", {"scripts": len(figures), "exit_codes": figures})
     finish()
 
