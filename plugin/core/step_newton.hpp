@@ -292,6 +292,73 @@ GmresResult gmres(const Op& apply, const Eigen::VectorXd& b, double rtol, int ma
   return out;
 }
 
+// The linearised law on a block of points, solved exactly: each point of the block moves by
+// d_i within its box [l_i, u_i] (its interval on one side of its held fraction, less its
+// fraction), under the force f_i + (M d)_i (M = df/dbeta on the block, its -q diagonal
+// included), and its law, linearised, is
+//   Phi_i(d) = d_i - clamp(d_i + (f + M d)_i / q_i, l_i, u_i) = 0
+// (evaluate()'s residual F to first order: F_i = b_i - clamp(b_i + f_i / q_i, lo_i, hi_i) on a
+// free point). Solved by the primal-dual active-set method (the semismooth Newton method on
+// Phi): the points whose d + (f + M d) / q leaves their box are held at its end, the others
+// solve their rows of f + M d = 0 by LU, until the sets repeat. Plain for `plain` iterations
+// (it solves the measured blocks in 2 to 3, where a damped one crawled: the full move changes
+// many sets at once), then, should it cycle (an indefinite M, W concave on the block), from the
+// best d met, each change damped until ||Phi|| falls. Returns the d of the smallest ||Phi||
+// met (phi_norm).
+inline Eigen::VectorXd solve_linearised_law(const Eigen::MatrixXd& M, const Eigen::VectorXd& f, const Eigen::VectorXd& q,
+                                            const Eigen::VectorXd& l, const Eigen::VectorXd& u, double& phi_norm) {
+  const Eigen::Index k = f.size();
+  auto phi = [&](const Eigen::VectorXd& d) {
+    const Eigen::VectorXd z = d + (f + M * d).cwiseQuotient(q);
+    return Eigen::VectorXd(d - z.cwiseMax(l).cwiseMin(u));
+  };
+  Eigen::VectorXd d = Eigen::VectorXd::Zero(k), best = d;
+  double norm = phi(d).norm(), best_norm = norm;
+  const int plain = 30;
+  std::vector<char> sets, last;  // per point: 0 inside, 1 at l, 2 at u
+  for (int it = 0; it < 100 && norm > 0; ++it) {
+    if (it == plain) d = best, norm = best_norm;
+    const Eigen::VectorXd z = d + (f + M * d).cwiseQuotient(q);
+    Eigen::VectorXd next = Eigen::VectorXd::Zero(k);
+    std::vector<Eigen::Index> inside;
+    sets.assign((std::size_t)k, 0);
+    for (Eigen::Index i = 0; i < k; ++i) {
+      if (z[i] <= l[i]) next[i] = l[i], sets[(std::size_t)i] = 1;
+      else if (z[i] >= u[i]) next[i] = u[i], sets[(std::size_t)i] = 2;
+      else inside.push_back(i);
+    }
+    if (it < plain && sets == last) break;  // d solves its own sets' equations: the solution
+    last = sets;
+    const Eigen::Index m = (Eigen::Index)inside.size();
+    if (m > 0) {
+      Eigen::MatrixXd A(m, m);
+      Eigen::VectorXd rhs(m);
+      const Eigen::VectorXd bound_force = f + M * next;  // next is 0 on the inside points
+      for (Eigen::Index a = 0; a < m; ++a) {
+        rhs[a] = -bound_force[inside[(std::size_t)a]];
+        for (Eigen::Index b = 0; b < m; ++b) A(a, b) = M(inside[(std::size_t)a], inside[(std::size_t)b]);
+      }
+      const Eigen::VectorXd x = A.fullPivLu().solve(rhs);
+      if (!x.allFinite()) break;
+      for (Eigen::Index a = 0; a < m; ++a) next[inside[(std::size_t)a]] = x[a];
+    }
+    double t = 1.0, trial = phi(next).norm();
+    Eigen::VectorXd moved = next;
+    if (it >= plain) {
+      for (int halving = 0; halving < 30; ++halving, t *= 0.5) {
+        moved = d + t * (next - d);
+        trial = phi(moved).norm();
+        if (trial < (1 - 1e-4 * t) * norm) break;
+      }
+      if (!(trial < norm)) break;
+    }
+    d = moved, norm = trial;
+    if (norm < best_norm) best = d, best_norm = norm;
+  }
+  phi_norm = best_norm;
+  return best;
+}
+
 }  // namespace step_detail
 
 class StepSolver {
@@ -886,74 +953,6 @@ class StepSolver {
     return stable ? Newton : NegativeCurvature;
   }
 
-  // The linearised law on a block of points, solved exactly: each point of the block moves by
-  // d_i within its box [l_i, u_i] (its interval on one side of its held fraction, less its
-  // fraction), under the force f_i + (M d)_i (M = df/dbeta on the block, its -q diagonal
-  // included), and its law, linearised, is
-  //   Phi_i(d) = d_i - clamp(d_i + (f + M d)_i / q_i, l_i, u_i) = 0
-  // (evaluate()'s residual F to first order: F_i = b_i - clamp(b_i + f_i / q_i, lo_i, hi_i) on a
-  // free point). Solved by the primal-dual active-set method (the semismooth Newton method on
-  // Phi): the points whose d + (f + M d) / q leaves their box are held at its end, the others
-  // solve their rows of f + M d = 0 by LU, until the sets repeat. Plain for `plain` iterations
-  // (it solves the measured blocks in 2 to 3, where a damped one crawled: the full move changes
-  // many sets at once), then, should it cycle (an indefinite M, W concave on the block), from the
-  // best d met, each change damped until ||Phi|| falls. Returns the d of the smallest ||Phi||
-  // met (phi_norm).
-  static Eigen::VectorXd solve_linearised_law(const Eigen::MatrixXd& M, const Eigen::VectorXd& f,
-                                              const Eigen::VectorXd& q, const Eigen::VectorXd& l,
-                                              const Eigen::VectorXd& u, double& phi_norm) {
-    const Eigen::Index k = f.size();
-    auto phi = [&](const Eigen::VectorXd& d) {
-      const Eigen::VectorXd z = d + (f + M * d).cwiseQuotient(q);
-      return Eigen::VectorXd(d - z.cwiseMax(l).cwiseMin(u));
-    };
-    Eigen::VectorXd d = Eigen::VectorXd::Zero(k), best = d;
-    double norm = phi(d).norm(), best_norm = norm;
-    const int plain = 30;
-    std::vector<char> sets, last;  // per point: 0 inside, 1 at l, 2 at u
-    for (int it = 0; it < 100 && norm > 0; ++it) {
-      if (it == plain) d = best, norm = best_norm;
-      const Eigen::VectorXd z = d + (f + M * d).cwiseQuotient(q);
-      Eigen::VectorXd next = Eigen::VectorXd::Zero(k);
-      std::vector<Eigen::Index> inside;
-      sets.assign((std::size_t)k, 0);
-      for (Eigen::Index i = 0; i < k; ++i) {
-        if (z[i] <= l[i]) next[i] = l[i], sets[(std::size_t)i] = 1;
-        else if (z[i] >= u[i]) next[i] = u[i], sets[(std::size_t)i] = 2;
-        else inside.push_back(i);
-      }
-      if (it < plain && sets == last) break;  // d solves its own sets' equations: the solution
-      last = sets;
-      const Eigen::Index m = (Eigen::Index)inside.size();
-      if (m > 0) {
-        Eigen::MatrixXd A(m, m);
-        Eigen::VectorXd rhs(m);
-        const Eigen::VectorXd bound_force = f + M * next;  // next is 0 on the inside points
-        for (Eigen::Index a = 0; a < m; ++a) {
-          rhs[a] = -bound_force[inside[(std::size_t)a]];
-          for (Eigen::Index b = 0; b < m; ++b) A(a, b) = M(inside[(std::size_t)a], inside[(std::size_t)b]);
-        }
-        const Eigen::VectorXd x = A.fullPivLu().solve(rhs);
-        if (!x.allFinite()) break;
-        for (Eigen::Index a = 0; a < m; ++a) next[inside[(std::size_t)a]] = x[a];
-      }
-      double t = 1.0, trial = phi(next).norm();
-      Eigen::VectorXd moved = next;
-      if (it >= plain) {
-        for (int halving = 0; halving < 30; ++halving, t *= 0.5) {
-          moved = d + t * (next - d);
-          trial = phi(moved).norm();
-          if (trial < (1 - 1e-4 * t) * norm) break;
-        }
-        if (!(trial < norm)) break;
-      }
-      d = moved, norm = trial;
-      if (norm < best_norm) best = d, best_norm = norm;
-    }
-    phi_norm = best_norm;
-    return best;
-  }
-
   // Dense Newton moves (StepSettings::dense_block) from s, for a step whose moves on W stalled.
   // Per iteration: the block starts as the free points; its columns of the linearisation
   // df/dbeta are built one product a point, the linearised law solved exactly on the block
@@ -999,7 +998,7 @@ class StepSolver {
           for (Eigen::Index b = 0; b < k; ++b) M(a, b) = columns[(std::size_t)b][i];
           f[a] = force[(std::size_t)a], q[a] = s.q[i], l[a] = low[(std::size_t)a], u[a] = high[(std::size_t)a];
         }
-        d = solve_linearised_law(M, f, q, l, u, phi_norm);
+        d = step_detail::solve_linearised_law(M, f, q, l, u, phi_norm);
         if (grow == 3) break;
         // The bound points this move pushes off their bound or out of their band, to first order.
         Eigen::VectorXd g = Eigen::VectorXd::Zero(n);
