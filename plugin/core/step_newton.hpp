@@ -50,6 +50,11 @@
 //      d = f / (D + q), D = (rho a |tr e| [alpha > 0] + rho L / T0) kappa, which is the nested
 //      loops' enthalpy-regularised local step, with Armijo backtracking on W: the iteration
 //      cannot cycle.
+//   5. a step these moves stop advancing (`stall` iterations without halving the residual) with
+//      at most `dense_block` free points is finished by dense Newton moves on the law itself
+//      (dense_newton): the block's linearisation built one product a point, the linearised law
+//      solved exactly (its solution may be a saddle of W, which the moves above creep toward),
+//      the move accepted when the residual falls (which cannot cycle either).
 // A transformed point whose trace changed sign takes the other martensite (switch_variants).
 // Measured (docs/parameters.md, "Step solver"; tests/step_solver_test.py): 2 to 3 iterations per
 // transforming step on average, at most 6 once the ring has dilated, on the project's and the
