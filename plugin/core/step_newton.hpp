@@ -50,6 +50,11 @@
 //      d = f / (D + q), D = (rho a |tr e| [alpha > 0] + rho L / T0) kappa, which is the nested
 //      loops' enthalpy-regularised local step, with Armijo backtracking on W: the iteration
 //      cannot cycle.
+//   5. a step these moves stop advancing (`stall` iterations without halving the residual) with
+//      at most `dense_block` free points is finished by dense Newton moves on the law itself
+//      (dense_newton): the block's linearisation built one product a point, the linearised law
+//      solved exactly (its solution may be a saddle of W, which the moves above creep toward),
+//      the move accepted when the residual falls (which cannot cycle either).
 // A transformed point whose trace changed sign takes the other martensite (switch_variants).
 // Measured (docs/parameters.md, "Step solver"; tests/step_solver_test.py): 2 to 3 iterations per
 // transforming step on average, at most 6 once the ring has dilated, on the project's and the
@@ -132,6 +137,11 @@ struct StepSettings {
   // mode snapping, k = 5e5 Pa, 2 s steps) crept 11 iterations at about 1e-2 and then converged
   // at iteration 14; the paper's law keeps 10 (its steps' fall-backs unchanged).
   int stall_dissipative = 20;
+  // A step that would stop on `stall` and has at most this many free points is finished by
+  // dense Newton moves instead (solve(), dense_newton): the block's linearisation built column
+  // by column (one product a point), its linearised law solved exactly, the move accepted when
+  // it lowers the residual. 0: never (the step stops as before).
+  int dense_block = 128;
   std::FILE* trace = nullptr;  // one line per iteration there when set (the glue: SMA_STEP_TRACE=1)
 };
 
@@ -139,6 +149,7 @@ struct StepResult {
   bool converged = false;
   int iterations = 0, gradient_steps = 0, curvature_steps = 0, saddle_steps = 0, variant_switches = 0, evaluations = 0,
       products = 0;
+  int dense_steps = 0;  // the dense Newton moves of a step that stalled (StepSettings::dense_block)
   int heat_solves = 0, stiffness_solves = 0, psor_sweeps = 0, slip_iterations = 0;
   double residual = 0.0;
   std::string failure;  // why it stopped unconverged (empty when converged)
@@ -298,6 +309,73 @@ GmresResult gmres(const Op& apply, const Eigen::VectorXd& b, double rtol, int ma
     }
   }
   return out;
+}
+
+// The linearised law on a block of points, solved exactly: each point of the block moves by
+// d_i within its box [l_i, u_i] (its interval on one side of its held fraction, less its
+// fraction), under the force f_i + (M d)_i (M = df/dbeta on the block, its -q diagonal
+// included), and its law, linearised, is
+//   Phi_i(d) = d_i - clamp(d_i + (f + M d)_i / q_i, l_i, u_i) = 0
+// (evaluate()'s residual F to first order: F_i = b_i - clamp(b_i + f_i / q_i, lo_i, hi_i) on a
+// free point). Solved by the primal-dual active-set method (the semismooth Newton method on
+// Phi): the points whose d + (f + M d) / q leaves their box are held at its end, the others
+// solve their rows of f + M d = 0 by LU, until the sets repeat. Plain for `plain` iterations
+// (it solves the measured blocks in 2 to 3, where a damped one crawled: the full move changes
+// many sets at once), then, should it cycle (an indefinite M, W concave on the block), from the
+// best d met, each change damped until ||Phi|| falls. Returns the d of the smallest ||Phi||
+// met (phi_norm).
+inline Eigen::VectorXd solve_linearised_law(const Eigen::MatrixXd& M, const Eigen::VectorXd& f, const Eigen::VectorXd& q,
+                                            const Eigen::VectorXd& l, const Eigen::VectorXd& u, double& phi_norm) {
+  const Eigen::Index k = f.size();
+  auto phi = [&](const Eigen::VectorXd& d) {
+    const Eigen::VectorXd z = d + (f + M * d).cwiseQuotient(q);
+    return Eigen::VectorXd(d - z.cwiseMax(l).cwiseMin(u));
+  };
+  Eigen::VectorXd d = Eigen::VectorXd::Zero(k), best = d;
+  double norm = phi(d).norm(), best_norm = norm;
+  const int plain = 30;
+  std::vector<char> sets, last;  // per point: 0 inside, 1 at l, 2 at u
+  for (int it = 0; it < 100 && norm > 0; ++it) {
+    if (it == plain) d = best, norm = best_norm;
+    const Eigen::VectorXd z = d + (f + M * d).cwiseQuotient(q);
+    Eigen::VectorXd next = Eigen::VectorXd::Zero(k);
+    std::vector<Eigen::Index> inside;
+    sets.assign((std::size_t)k, 0);
+    for (Eigen::Index i = 0; i < k; ++i) {
+      if (z[i] <= l[i]) next[i] = l[i], sets[(std::size_t)i] = 1;
+      else if (z[i] >= u[i]) next[i] = u[i], sets[(std::size_t)i] = 2;
+      else inside.push_back(i);
+    }
+    if (it < plain && sets == last) break;  // d solves its own sets' equations: the solution
+    last = sets;
+    const Eigen::Index m = (Eigen::Index)inside.size();
+    if (m > 0) {
+      Eigen::MatrixXd A(m, m);
+      Eigen::VectorXd rhs(m);
+      const Eigen::VectorXd bound_force = f + M * next;  // next is 0 on the inside points
+      for (Eigen::Index a = 0; a < m; ++a) {
+        rhs[a] = -bound_force[inside[(std::size_t)a]];
+        for (Eigen::Index b = 0; b < m; ++b) A(a, b) = M(inside[(std::size_t)a], inside[(std::size_t)b]);
+      }
+      const Eigen::VectorXd x = A.fullPivLu().solve(rhs);
+      if (!x.allFinite()) break;
+      for (Eigen::Index a = 0; a < m; ++a) next[inside[(std::size_t)a]] = x[a];
+    }
+    double t = 1.0, trial = phi(next).norm();
+    Eigen::VectorXd moved = next;
+    if (it >= plain) {
+      for (int halving = 0; halving < 30; ++halving, t *= 0.5) {
+        moved = d + t * (next - d);
+        trial = phi(moved).norm();
+        if (trial < (1 - 1e-4 * t) * norm) break;
+      }
+      if (!(trial < norm)) break;
+    }
+    d = moved, norm = trial;
+    if (norm < best_norm) best = d, best_norm = norm;
+  }
+  phi_norm = best_norm;
+  return best;
 }
 
 }  // namespace step_detail
@@ -539,8 +617,23 @@ class StepSolver {
     double mark = s.residual_norm;
     int marked = 0;
     int rounds = set.pdas_rounds;  // raised for the rest of the step once a curvature move stalls
+    bool dense_tried = false;      // dense_newton, at most once a step
     while (s.residual_norm > set.tol && stats_.iterations < set.maxit) {
       const int stall = p_.dissipation > 0 ? set.stall_dissipative : set.stall;
+      if (!dense_tried && stats_.iterations - marked >= stall) {
+        // The globalisation on W stalls where the solution is a saddle of W on a small unstable
+        // block (its curvature moves and gradient steps creep toward it): dense Newton moves
+        // on the law itself, judged by the residual, finish such a step (once a step: their
+        // moves only lower the residual; should they halve it, the W moves go on from there).
+        // Tried earlier (after 3 iterations without halving) it changed default runs' steps the
+        // W moves solve (elliptic-friction's peak temperature by 0.5 K, another solution) and
+        // left 3 of sleeve-offset a = 2875's steps unsolved (docs/measurements.md#m-dense-newton).
+        dense_tried = true;
+        if (dense_newton(set, s)) break;
+        best = std::min(best, s.residual_norm);
+        if (s.residual_norm <= 0.5 * mark) mark = s.residual_norm, marked = stats_.iterations;
+        continue;
+      }
       if (stats_.iterations - marked >= stall) {
         stats_.failure = "the residual did not halve in " + std::to_string(stall) + " iterations";
         break;
@@ -1022,6 +1115,102 @@ class StepSolver {
     for (Eigen::Index i = 0; i < n; ++i) slope += cl.force[i] * p_.area[i] * d[i];
     if (!d.allFinite() || !(slope > 0)) return Gradient;
     return stable ? Newton : NegativeCurvature;
+  }
+
+  // Dense Newton moves (StepSettings::dense_block) from s, for a step whose moves on W stalled.
+  // Per iteration: the block starts as the free points; its columns of the linearisation
+  // df/dbeta are built one product a point, the linearised law solved exactly on the block
+  // (solve_linearised_law: the Newton move of the law, to a saddle of W as well as to a
+  // minimum), and any other point whose linearised law that move breaks (by more than a
+  // hundredth of the residual: a neighbour pushed off its bound or out of its band) joins the
+  // block, up to 3 times. The move, cut back by halves, is accepted when the step's residual
+  // max |F| falls by at least 1e-4 of its length fraction: the residual falls at every move, so
+  // the iteration cannot cycle. Stops (false) when no cut of the move lowers the residual, the
+  // block outgrows dense_block, or the iterations run out; true when the residual meets the
+  // tolerance.
+  bool dense_newton(const StepSettings& set, StepState& s) {
+    while (s.residual_norm > set.tol) {
+      if (stats_.iterations >= set.maxit) return false;
+      const Eigen::Index n = s.chi.size();
+      const Eigen::VectorXd beta = s.chi.cwiseAbs();
+      const Classified cl = classify(s, beta);
+      // The block: its points, forces, boxes (moves) and columns of df/dbeta (all points' rows).
+      std::vector<Eigen::Index> block;
+      std::vector<double> force, low, high;
+      std::vector<Eigen::VectorXd> columns;
+      std::vector<char> in((std::size_t)n, 0);
+      for (Eigen::Index i = 0; i < n; ++i)
+        if (cl.free[(std::size_t)i]) {
+          block.push_back(i), in[(std::size_t)i] = 1;
+          force.push_back(cl.force[i]), low.push_back(cl.lo[i] - beta[i]), high.push_back(cl.hi[i] - beta[i]);
+        }
+      if (block.empty() || (Eigen::Index)block.size() > set.dense_block) return false;
+      ++stats_.iterations;
+      Eigen::VectorXd unit = Eigen::VectorXd::Zero(n), d;
+      double phi_norm = 0;
+      for (int grow = 0;; ++grow) {
+        for (std::size_t b = columns.size(); b < block.size(); ++b) {
+          unit[block[b]] = 1.0;
+          columns.push_back(force_derivative(s, unit, cl.upper));
+          unit[block[b]] = 0.0;
+        }
+        const Eigen::Index k = (Eigen::Index)block.size();
+        Eigen::MatrixXd M(k, k);
+        Eigen::VectorXd f(k), q(k), l(k), u(k);
+        for (Eigen::Index a = 0; a < k; ++a) {
+          const Eigen::Index i = block[(std::size_t)a];
+          for (Eigen::Index b = 0; b < k; ++b) M(a, b) = columns[(std::size_t)b][i];
+          f[a] = force[(std::size_t)a], q[a] = s.q[i], l[a] = low[(std::size_t)a], u[a] = high[(std::size_t)a];
+        }
+        d = step_detail::solve_linearised_law(M, f, q, l, u, phi_norm);
+        if (grow == 3) break;
+        // The bound points this move pushes off their bound or out of their band, to first order.
+        Eigen::VectorXd g = Eigen::VectorXd::Zero(n);
+        for (Eigen::Index b = 0; b < k; ++b) g += d[b] * columns[(std::size_t)b];
+        const std::size_t before = block.size();
+        for (Eigen::Index i = 0; i < n; ++i) {
+          if (in[(std::size_t)i] || !(s.q[i] > 0)) continue;
+          const double b = beta[i], held = s.held[i];
+          const double right = side_force(s, i, b, b < held) + g[i], left = side_force(s, i, b, b <= held) + g[i];
+          const double up = (b < held ? held : 1.0) - b, down = (b > held ? held : 0.0) - b;
+          if (up > 0 && right / s.q[i] > 1e-2 * s.residual_norm)
+            block.push_back(i), force.push_back(right - g[i]), low.push_back(0.0), high.push_back(up);
+          else if (down < 0 && left / s.q[i] < -1e-2 * s.residual_norm)
+            block.push_back(i), force.push_back(left - g[i]), low.push_back(down), high.push_back(0.0);
+          else
+            continue;
+          in[(std::size_t)i] = 1;
+        }
+        if (block.size() == before) break;
+        if ((Eigen::Index)block.size() > set.dense_block) return false;
+      }
+      const Eigen::Index k = (Eigen::Index)block.size();
+      bool accepted = false;
+      double t = 1.0;
+      for (int halving = 0; halving < 20 && !accepted; ++halving, t *= 0.5) {
+        Eigen::VectorXd moved = beta;
+        for (Eigen::Index a = 0; a < k; ++a) {
+          const Eigen::Index i = block[(std::size_t)a];
+          moved[i] = std::clamp(beta[i] + t * d[a], beta[i] + low[(std::size_t)a], beta[i] + high[(std::size_t)a]);
+        }
+        if ((moved - beta).lpNorm<Eigen::Infinity>() == 0) break;
+        StepState trial = evaluate(signed_fractions(s, moved), s.r, s.threshold);
+        if (trial.residual_norm <= set.tol || trial.residual_norm <= (1 - 1e-4 * t) * s.residual_norm) {
+          s = std::move(trial);
+          switch_variants(s);
+          accepted = true;
+        }
+      }
+      if (set.trace)
+        std::fprintf(set.trace,
+                     "step iteration %d: dense newton move (%ld points, linearised law to %.1e, length %g), %s, residual "
+                     "%.3e, %d evaluations, %d products\n",
+                     stats_.iterations, (long)k, phi_norm, accepted ? 2 * t : t, accepted ? "taken" : "no fall",
+                     s.residual_norm, stats_.evaluations, stats_.products);
+      if (!accepted) return false;
+      ++stats_.dense_steps;
+    }
+    return true;
   }
 
   // The nested loops' local step as a gradient step: d = f / (D + q) on the free points.

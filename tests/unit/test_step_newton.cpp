@@ -444,3 +444,95 @@ TEST(StepNewton, GmresSolvesAndReportsAnUnstableOperator) {
 }
 
 }  // namespace
+
+// A step whose moves on W stall is finished by dense Newton moves (StepSettings::dense_block).
+// On the 2D sleeves such steps are a small unstable block whose solution is a saddle of W
+// (sleeve-offset step 579: 55 points) or a block the active-set rounds pin whole (sleeve-life
+// -phasemodel fraction step 1387: 3 points); the radial sleeve's W moves solve every step, so
+// here the stall rule is made strict (one iteration without halving the residual): without the
+// dense moves two steps stop unsolved, with them every step satisfies its equations.
+TEST(StepNewton, DenseNewtonFinishesStalledSteps) {
+  for (const int dense_block : {0, 128}) {
+    RadialSleeve rs;
+    rs.a = 3000;
+    rs.Ri = rs.pipe - 5e-4;
+    rs.steps = 90;
+    rs.tend = 90;
+    rs.nr = 20;
+    rs.build();
+    sma::StepSettings set;
+    set.stall = 1;
+    set.dense_block = dense_block;
+    const int n = rs.nr + 1;
+    Eigen::VectorXd T = Eigen::VectorXd::Constant(n, rs.Tinit), chi = Eigen::VectorXd::Zero(rs.nr);
+    Eigen::VectorXd b_start = chi, r = Eigen::VectorXd::Zero(2), g = Eigen::VectorXd::Zero(1), u(n), T1(n);
+    double theta_factored = -1;
+    int failures = 0, dense = 0, worst = 0;
+    for (int step = 0; step < rs.steps; ++step) {
+      const double theta = step < 2 ? 1.0 : 0.5;
+      if (theta != theta_factored) rs.factor_heat(theta), theta_factored = theta;
+      const sma::StepProblem p = rs.problem(T, chi, b_start, theta);
+      sma::StepResult res = sma::solve_fraction_step(p, set, chi, r, g, T1, u);
+      if (!res.converged) {  // counted, then solved without the strict rule to go on
+        ++failures;
+        sma::StepSettings patient = set;
+        patient.stall = 1000;
+        res = sma::solve_fraction_step(p, patient, chi, r, g, T1, u);
+        ASSERT_TRUE(res.converged) << "step " << step + 1 << ": " << res.failure;
+      } else {
+        expect_step_equations(rs, p, chi, T1, u, r, set.tol);
+      }
+      dense += res.dense_steps;
+      worst = std::max(worst, res.dense_steps);
+      T = T1;
+      b_start = chi.cwiseAbs();
+    }
+    if (dense_block == 0) {
+      EXPECT_GT(failures, 0) << "the W moves solved every step at the strict stall rule: the case tests nothing";
+    } else {
+      EXPECT_EQ(failures, 0);
+      EXPECT_GT(dense, 0);
+      EXPECT_LE(worst, 4);  // Newton's convergence: measured 3 moves from a residual of 9e-2
+      RecordProperty("dense_moves", dense);
+    }
+  }
+}
+
+// The linearised law on a block (step_detail::solve_linearised_law) with an indefinite M (W
+// concave on the block, as on the front of sleeve-offset's step 579): a planted solution, some
+// points inside their box, some at each end with the force pointing out, is found exactly.
+TEST(StepNewton, LinearisedLawSolvedOnAnIndefiniteBlock) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const int k = 40;
+  int solved = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    // M = -(S + q): symmetric, q = 1; S with eigenvalues in [-1.3, 0.7] shifted: W concave along some.
+    Eigen::MatrixXd X(k, k);
+    for (int i = 0; i < k; ++i)
+      for (int j = 0; j < k; ++j) X(i, j) = unit(rng);
+    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(X);
+    const Eigen::MatrixXd Q = qr.householderQ();
+    Eigen::VectorXd eig(k);
+    for (int i = 0; i < k; ++i) eig[i] = i < 3 ? -0.2 - 0.1 * i : 0.2 + 2.0 * (i + 1) / k;
+    const Eigen::MatrixXd M = -(Q * eig.asDiagonal() * Q.transpose());
+    const Eigen::VectorXd q = Eigen::VectorXd::Ones(k);
+    Eigen::VectorXd l(k), u(k), d(k), force_at(k);
+    for (int i = 0; i < k; ++i) {
+      l[i] = -0.5 - 0.5 * std::fabs(unit(rng)), u[i] = 0.5 + 0.5 * std::fabs(unit(rng));
+      const int kind = i % 3;  // 0 inside (force 0), 1 at l (force < 0), 2 at u (force > 0)
+      d[i] = kind == 0 ? 0.3 * unit(rng) : kind == 1 ? l[i] : u[i];
+      force_at[i] = kind == 0 ? 0.0 : kind == 1 ? -0.2 - std::fabs(unit(rng)) : 0.2 + std::fabs(unit(rng));
+    }
+    const Eigen::VectorXd f = force_at - M * d;  // f + M d = force_at at the planted d
+    double phi = 1;
+    const Eigen::VectorXd found = sma::step_detail::solve_linearised_law(M, f, q, l, u, phi);
+    const Eigen::VectorXd z = found + (f + M * found).cwiseQuotient(q);
+    const double check = (found - z.cwiseMax(l).cwiseMin(u)).norm();  // Phi recomputed here
+    EXPECT_LE(check, 1e-10) << "trial " << trial;
+    EXPECT_NEAR(check, phi, 1e-12);
+    solved += check <= 1e-10 && (found - d).norm() <= 1e-8;
+  }
+  // The law may have other solutions for an indefinite M; the planted one is found in most trials.
+  EXPECT_GE(solved, 15);
+}
