@@ -119,6 +119,8 @@
 //       heat.idp's HeatRhs; long HeatThetaEnergy(real[] [slot, dt, theta], real[] T0, real[] T1,
 //       real[] S0, real[] S1, real[] energy)   heat.idp's HeatEnergy, energy = [boundary, latent]
 //       (plugin/core/heat_theta.hpp: the script's arithmetic and order, FreeFEM's product)
+//   long SameValues(real[] a, real[] b)   1 when b has a's size and every a_i - b_i is 0 (a NaN:
+//       0), else 0 (heat.idp's HeatPrepare)
 //   long ContactHeatExchange(real[int,int] contactTable, real[] r, int m, real gContact, real gPipe,
 //                            real Tpipe, real[] g, real[] Text)   the sleeve's default heat condition
 //       at its m contact nodes (edp/problems/sleeve/time-loop.idp): g = gContact where the node
@@ -725,6 +727,10 @@ long HeatThetaEnergy(KN<double>* const& settings, KN<double>* const& T0, KN<doub
   });
 }
 
+long SameValues(KN<double>* const& a, KN<double>* const& b) {
+  return guarded("SameValues", [&] { return sma::same_values(cview(a), cview(b)) ? 1L : 0L; });
+}
+
 // Projected SOR on the full stiffness system; the matrix is read in CSR form (a row-major copy
 // through ToEigen: O(nnz) per call).
 long PsorFull(Matrice_Creuse<double>* const& K, KN<double>* const& b, KNM<double>* const& contact,
@@ -1062,6 +1068,7 @@ static void Load_Init() {
   Global.Add("HeatOperatorsSet", "(",
              new OneOperator7_<long, long, Matrice_Creuse<double>*, A, A, A, A, A>(HeatOperatorsSet));
   Global.Add("HeatBoundarySet", "(", new OneOperator5_<long, long, A, A, A, A>(HeatBoundarySet));
+  Global.Add("SameValues", "(", new OneOperator2_<long, A, A>(SameValues));
   Global.Add("HeatThetaRhs", "(", new OneOperator5_<long, A, A, A, A, A>(HeatThetaRhs));
   Global.Add("HeatThetaEnergy", "(", new OneOperator6_<long, A, A, A, A, A, A>(HeatThetaEnergy));
   Global.Add("StepSolveFraction", "(",

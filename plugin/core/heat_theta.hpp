@@ -47,14 +47,15 @@ void heat_theta_rhs(const HeatThetaArrays& h, double dt, double theta, double tg
   h.check(n);
   if (s0.size() != n || s1.size() != n || rhs.size() != n)
     throw std::invalid_argument("heat_theta_rhs: T0, S0, S1 and rhs need one value per node");
-  std::vector<double> conducted(n);
-  apply_conduction(t0.begin(), conducted.data());
+  if (n > 0 && rhs.begin() == t0.begin()) throw std::invalid_argument("heat_theta_rhs: rhs must not be T0");
+  // Kt T0 into rhs, then each node's right side from it in place.
+  apply_conduction(t0.begin(), rhs.begin());
   const double explicit_weight = 1 - theta;
   for (std::size_t i = 0; i < n; ++i) {
     const double g0 = h.g0[i] * h.exchange_length[i], g1 = h.g1[i] * h.exchange_length[i];
     double r = h.capacity[i] * t0[i];
     r /= dt;
-    double work = conducted[i];
+    double work = rhs[i];  // (Kt T0)_i
     work += g0 * t0[i];
     r -= explicit_weight * work;
     double explicit_part = g0 * h.text0[i];
@@ -84,14 +85,14 @@ HeatStepEnergy heat_theta_energy(const HeatThetaArrays& h, double dt, double the
   if (t1.size() != n || s0.size() != n || s1.size() != n)
     throw std::invalid_argument("heat_theta_energy: T0, T1, S0 and S1 need one value per node");
   const double explicit_weight = 1 - theta;
-  std::vector<double> in0(n), in1(n);
+  // The heat entering through the exchange at each end: G (Text - T), node by node.
+  auto in0 = [&](std::size_t i) { return (h.g0[i] * h.exchange_length[i]) * (h.text0[i] - t0[i]); };
+  auto in1 = [&](std::size_t i) { return (h.g1[i] * h.exchange_length[i]) * (h.text1[i] - t1[i]); };
   double sum0 = 0, sum1 = 0, source0 = 0, source1 = 0;
   bool any_imposed = false;
   for (std::size_t i = 0; i < n; ++i) {
-    in0[i] = (h.g0[i] * h.exchange_length[i]) * (h.text0[i] - t0[i]);
-    in1[i] = (h.g1[i] * h.exchange_length[i]) * (h.text1[i] - t1[i]);
-    sum0 += in0[i];
-    sum1 += in1[i];
+    sum0 += in0(i);
+    sum1 += in1(i);
     source0 += s0[i];
     source1 += s1[i];
     any_imposed = any_imposed || h.imposed[i] > 0;
@@ -112,8 +113,8 @@ HeatStepEnergy heat_theta_energy(const HeatThetaArrays& h, double dt, double the
       double residual = h.capacity[i] * (t1[i] - t0[i]);
       residual /= dt;
       residual += conducted[i];
-      double gained = theta * in1[i];
-      gained += explicit_weight * in0[i];
+      double gained = theta * in1(i);
+      gained += explicit_weight * in0(i);
       gained += theta * s1[i];
       gained += explicit_weight * s0[i];
       residual -= gained;
@@ -122,6 +123,16 @@ HeatStepEnergy heat_theta_energy(const HeatThetaArrays& h, double dt, double the
     e.boundary += dt * imposed_sum;
   }
   return e;
+}
+
+// Whether b holds a's values: the same size and every difference a_i - b_i zero (heat.idp's
+// HeatPrepare: has the exchange or the imposed set changed since the last factorisation?). A NaN
+// counts as a change (its difference is not zero), so the factorisation's check sees it.
+inline bool same_values(span<const double> a, span<const double> b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (!(a[i] - b[i] == 0)) return false;
+  return true;
 }
 
 }  // namespace sma

@@ -97,3 +97,14 @@ TEST(HeatTheta, ArraysOfAnotherSizeAreRefused) {
 }
 
 }  // namespace
+
+namespace {
+TEST(HeatTheta, SameValuesSeesSizeValueAndNaN) {
+  const std::vector<double> a{1.0, 2000.0, 0.0}, b{1.0, 2000.0, -0.0}, c{1.0, 2000.0 + 1e-12, 0.0}, d{1.0, 2000.0};
+  const std::vector<double> nan{1.0, std::nan(""), 0.0};
+  EXPECT_TRUE(sma::same_values(a, b));  // 0 - (-0) = 0: the script's linfty of the difference is 0 too
+  EXPECT_FALSE(sma::same_values(a, c));
+  EXPECT_FALSE(sma::same_values(a, d));
+  EXPECT_FALSE(sma::same_values(nan, nan));
+}
+}  // namespace
