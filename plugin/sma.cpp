@@ -110,6 +110,17 @@
 //   long AreaFractions(real[] chi, real[] area, real[] fractions)   fractions = the area fractions
 //       [austenite, martensite 1, martensite 2] of signed martensite fractions chi (resized to 3;
 //       plugin/core/step_record.hpp, as the script's FractionsOfChi computed them)
+//   long HeatOperatorsSet(long handle, matrix Kt, real[] capacity, real[] exchangeLength,
+//                         real[] imposedMask, real[] freeMask, real[] TI)   a slot (handle < 0: a
+//       new one) keeping the heat problem's arrays (edp/solvers/heat.idp's variables: pointers, read
+//       at each call); long HeatBoundarySet(long handle, real[] G0, real[] G1, real[] Text0,
+//       real[] Text1) its boundary data
+//   long HeatThetaRhs(real[] [slot, dt, theta, tgv], real[] T0, real[] S0, real[] S1, real[] rhs)
+//       heat.idp's HeatRhs; long HeatThetaEnergy(real[] [slot, dt, theta], real[] T0, real[] T1,
+//       real[] S0, real[] S1, real[] energy)   heat.idp's HeatEnergy, energy = [boundary, latent]
+//       (plugin/core/heat_theta.hpp: the script's arithmetic and order, FreeFEM's product)
+//   long SameValues(real[] a, real[] b)   1 when b has a's size and every a_i - b_i is 0 (a NaN:
+//       0), else 0 (heat.idp's HeatPrepare)
 //   long ContactHeatExchange(real[int,int] contactTable, real[] r, int m, real gContact, real gPipe,
 //                            real Tpipe, real[] g, real[] Text)   the sleeve's default heat condition
 //       at its m contact nodes (edp/problems/sleeve/time-loop.idp): g = gContact where the node
@@ -162,6 +173,7 @@
 #include "core/phase_projection.hpp"
 #include "core/step_newton.hpp"
 #include "core/step_record.hpp"
+#include "core/heat_theta.hpp"
 
 using namespace Fem2D;
 
@@ -631,6 +643,94 @@ long StepFractionRecord(KN<double>* const& settings, Matrice_Creuse<double>* con
   });
 }
 
+// The heat problem's arrays by slot (HeatOperatorsSet and HeatBoundarySet, once a run): the
+// script's own arrays (globals of edp/solvers/heat.idp, resized in place), kept as pointers to its
+// variables and read at each call.
+struct HeatSlot {
+  Matrice_Creuse<double>* conduction = nullptr;
+  KN<double>*capacity = nullptr, *length = nullptr, *imposed = nullptr, *free_mask = nullptr, *imposed_t = nullptr;
+  KN<double>*g0 = nullptr, *g1 = nullptr, *text0 = nullptr, *text1 = nullptr;
+};
+std::vector<HeatSlot>& HeatSlots() {
+  static std::vector<HeatSlot> slots;
+  return slots;
+}
+HeatSlot& HeatSlotAt(double handle) {
+  const long slot = lrint(handle);
+  if (slot < 0 || slot >= (long)HeatSlots().size() || !HeatSlots()[slot].g0)
+    throw std::invalid_argument("no heat arrays in slot " + std::to_string(slot) +
+                                " (HeatOperatorsSet, then HeatBoundarySet, first)");
+  return HeatSlots()[slot];
+}
+
+long HeatOperatorsSet(long const& handle, Matrice_Creuse<double>* const& conduction, KN<double>* const& capacity,
+                      KN<double>* const& length, KN<double>* const& imposed, KN<double>* const& freeMask,
+                      KN<double>* const& TI) {
+  return guarded("HeatOperatorsSet", [&] {
+    long slot = handle;
+    if (slot < 0) {
+      HeatSlots().emplace_back();
+      slot = (long)HeatSlots().size() - 1;
+    }
+    if (slot >= (long)HeatSlots().size()) throw std::invalid_argument("no heat slot " + std::to_string(slot));
+    HeatSlot& h = HeatSlots()[slot];
+    h.conduction = conduction, h.capacity = capacity, h.length = length, h.imposed = imposed;
+    h.free_mask = freeMask, h.imposed_t = TI;
+    return slot;
+  });
+}
+
+long HeatBoundarySet(long const& handle, KN<double>* const& g0, KN<double>* const& g1, KN<double>* const& text0,
+                     KN<double>* const& text1) {
+  return guarded("HeatBoundarySet", [&] {
+    if (handle < 0 || handle >= (long)HeatSlots().size() || !HeatSlots()[handle].conduction)
+      throw std::invalid_argument("no heat slot " + std::to_string(handle) + " (HeatOperatorsSet first)");
+    HeatSlot& h = HeatSlots()[handle];
+    h.g0 = g0, h.g1 = g1, h.text0 = text0, h.text1 = text1;
+    return handle;
+  });
+}
+
+sma::HeatThetaArrays HeatArraysOf(const HeatSlot& h) {
+  return {cview(h.capacity), cview(h.length), cview(h.imposed), cview(h.free_mask), cview(h.imposed_t),
+          cview(h.g0),       cview(h.g1),     cview(h.text0),   cview(h.text1)};
+}
+
+long HeatThetaRhs(KN<double>* const& settings, KN<double>* const& T0, KN<double>* const& S0, KN<double>* const& S1,
+                  KN<double>* const& rhs) {
+  return guarded("HeatThetaRhs", [&] {
+    if (settings->N() != 4) throw std::invalid_argument("settings must be [heat slot, dt, theta, tgv]");
+    const HeatSlot& h = HeatSlotAt((*settings)[0]);
+    const long n = T0->N();
+    if (rhs->N() != n) rhs->resize(n);
+    sma::heat_theta_rhs(
+        HeatArraysOf(h), (*settings)[1], (*settings)[2], (*settings)[3], cview(T0), cview(S0), cview(S1),
+        [&](const double* x, double* y) { FreeFemProduct(h.conduction, x, y, n, "the heat conduction matrix"); },
+        view(rhs));
+    return n;
+  });
+}
+
+long HeatThetaEnergy(KN<double>* const& settings, KN<double>* const& T0, KN<double>* const& T1,
+                     KN<double>* const& S0, KN<double>* const& S1, KN<double>* const& energy) {
+  return guarded("HeatThetaEnergy", [&] {
+    if (settings->N() != 3) throw std::invalid_argument("settings must be [heat slot, dt, theta]");
+    const HeatSlot& h = HeatSlotAt((*settings)[0]);
+    const long n = T0->N();
+    const sma::HeatStepEnergy e = sma::heat_theta_energy(
+        HeatArraysOf(h), (*settings)[1], (*settings)[2], cview(T0), cview(T1), cview(S0), cview(S1),
+        [&](const double* x, double* y) { FreeFemProduct(h.conduction, x, y, n, "the heat conduction matrix"); });
+    if (energy->N() != 2) energy->resize(2);
+    (*energy)[0] = e.boundary;
+    (*energy)[1] = e.latent;
+    return n;
+  });
+}
+
+long SameValues(KN<double>* const& a, KN<double>* const& b) {
+  return guarded("SameValues", [&] { return sma::same_values(cview(a), cview(b)) ? 1L : 0L; });
+}
+
 // Projected SOR on the full stiffness system; the matrix is read in CSR form (a row-major copy
 // through ToEigen: O(nnz) per call).
 long PsorFull(Matrice_Creuse<double>* const& K, KN<double>* const& b, KNM<double>* const& contact,
@@ -678,7 +778,7 @@ long RoundToFloat(KN<double>* const& x) {
   return changed;
 }
 
-double SmaPluginVersion() { return 14.0; }
+double SmaPluginVersion() { return 15.0; }
 
 // FreeFEM's time() has a resolution of one second and clock() counts CPU time; timings of the
 // scenes are wall-clock seconds from a monotonic clock.
@@ -965,6 +1065,12 @@ static void Load_Init() {
   Global.Add("StepFractionRecord", "(",
              new OneOperator8_<long, A, Matrice_Creuse<double>*, Matrice_Creuse<double>*, A, A, A, A, A>(
                  StepFractionRecord));
+  Global.Add("HeatOperatorsSet", "(",
+             new OneOperator7_<long, long, Matrice_Creuse<double>*, A, A, A, A, A>(HeatOperatorsSet));
+  Global.Add("HeatBoundarySet", "(", new OneOperator5_<long, long, A, A, A, A>(HeatBoundarySet));
+  Global.Add("SameValues", "(", new OneOperator2_<long, A, A>(SameValues));
+  Global.Add("HeatThetaRhs", "(", new OneOperator5_<long, A, A, A, A, A>(HeatThetaRhs));
+  Global.Add("HeatThetaEnergy", "(", new OneOperator6_<long, A, A, A, A, A, A>(HeatThetaEnergy));
   Global.Add("StepSolveFraction", "(",
              new OneOperator8_<long, A, A, KNM<double>*, A, A, A, A, A>(StepSolveFraction));
   Global.Add("AuchmutyLocal", "(", new OneOperator5_<double, A, A, A, A, A>(AuchmutyLocal));
