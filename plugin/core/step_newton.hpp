@@ -172,6 +172,21 @@ struct StepState {
 
 namespace step_detail {
 
+// out += (scale m) x for a column-major sparse m, x given per column by x_of(j): Eigen's sparse *
+// dense product order (column by column from 0; a scale on the product scales the matrix's values,
+// and a scale of 1 changes no bit), through raw pointers (a store through a vector's operator[]
+// could alias its own members, which the loop would otherwise reload at every term).
+template <class ColumnValue>
+inline void add_scaled_columns(const SparseMatrix& m, double scale, ColumnValue x_of, double* out) {
+  const int* const outer = m.outerIndexPtr();
+  const int* const inner = m.innerIndexPtr();
+  const double* const value = m.valuePtr();
+  for (Eigen::Index j = 0; j < m.outerSize(); ++j) {
+    const double x = x_of(j);
+    for (int e = outer[j]; e < outer[j + 1]; ++e) out[inner[e]] += (scale * value[e]) * x;
+  }
+}
+
 inline span<const double> as_span(const Eigen::VectorXd& v) { return {v.data(), (std::size_t)v.size()}; }
 
 // GMRES from x = 0 (no restart) on a linear operator; the Ritz values of its Hessenberg matrix
@@ -397,25 +412,14 @@ class StepSolver {
     Eigen::VectorXd& rhs = work_.rhs;
     const Eigen::Index nodes = p_.heat_rhs.size(), dofs = p_.force.size();
     rhs.setZero(nodes);
-    // (Local pointers: a store through rhs[] could alias the vectors' own members, which the
-    // loops would otherwise reload at every term.)
-    double* const rhs_data = rhs.data();
-    const double scale = p_.latent_scale;
-    const int* outer = p_.latent.outerIndexPtr();
-    const int* inner = p_.latent.innerIndexPtr();
-    const double* value = p_.latent.valuePtr();
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const double x = std::fabs(chi[i]) - p_.b_start[i];
-      for (int e = outer[i]; e < outer[i + 1]; ++e) rhs_data[inner[e]] += (scale * value[e]) * x;
-    }
+    step_detail::add_scaled_columns(p_.latent, p_.latent_scale,
+                                    [&](Eigen::Index i) { return std::fabs(chi[i]) - p_.b_start[i]; }, rhs.data());
     for (Eigen::Index j = 0; j < nodes; ++j) rhs[j] = p_.heat_rhs[j] + p_.heat_mask[j] * rhs[j];
     if (p_.dissipation > 0) {  // the dissipated heat k |chi - chi_start| / dt, a source beside the latent heat
       Eigen::VectorXd& source = work_.heat;
       source.setZero(nodes);
-      for (Eigen::Index i = 0; i < n; ++i) {
-        const double x = std::fabs(chi[i] - p_.chi_start[i]);
-        for (int e = outer[i]; e < outer[i + 1]; ++e) source[inner[e]] += (p_.dissipation_scale * value[e]) * x;
-      }
+      step_detail::add_scaled_columns(p_.latent, p_.dissipation_scale,
+                                      [&](Eigen::Index i) { return std::fabs(chi[i] - p_.chi_start[i]); }, source.data());
       for (Eigen::Index j = 0; j < nodes; ++j) rhs[j] += p_.heat_mask[j] * source[j];
     }
     s.T.resize(nodes);
@@ -423,14 +427,7 @@ class StepSolver {
     // T at the points (interp T), the law's coefficients there.
     Eigen::VectorXd& Tq = work_.points;
     Tq.setZero(n);
-    outer = p_.interp.outerIndexPtr();
-    inner = p_.interp.innerIndexPtr();
-    value = p_.interp.valuePtr();
-    double* const tq = Tq.data();
-    for (Eigen::Index j = 0; j < nodes; ++j) {
-      const double x = s.T[j];
-      for (int e = outer[j]; e < outer[j + 1]; ++e) tq[inner[e]] += value[e] * x;
-    }
+    step_detail::add_scaled_columns(p_.interp, 1.0, [&](Eigen::Index j) { return s.T[j]; }, Tq.data());
     s.alpha.resize(n);
     s.c.resize(n);
     s.q.resize(n);
@@ -442,14 +439,7 @@ class StepSolver {
     // Mechanics with contact: (f + B (alpha chi)) .* free.
     Eigen::VectorXd& mech = work_.mech;
     mech.setZero(dofs);
-    outer = p_.load.outerIndexPtr();
-    inner = p_.load.innerIndexPtr();
-    value = p_.load.valuePtr();
-    double* const mech_data = mech.data();
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const double x = s.alpha[i] * chi[i];
-      for (int e = outer[i]; e < outer[i + 1]; ++e) mech_data[inner[e]] += value[e] * x;
-    }
+    step_detail::add_scaled_columns(p_.load, 1.0, [&](Eigen::Index i) { return s.alpha[i] * chi[i]; }, mech.data());
     for (Eigen::Index j = 0; j < dofs; ++j) mech[j] = (p_.force[j] + mech[j]) * p_.free[j];
     s.r = r0;
     s.threshold = threshold0;
@@ -458,6 +448,9 @@ class StepSolver {
     // The trace (B' u) ./ area (Eigen's row-wise product: each sum from 0, added to 0).
     s.trace.resize(n);
     const double* const u = s.u.data();
+    const int* const outer = p_.load.outerIndexPtr();
+    const int* const inner = p_.load.innerIndexPtr();
+    const double* const value = p_.load.valuePtr();
     for (Eigen::Index i = 0; i < n; ++i) {
       double t = 0.0;
       for (int e = outer[i]; e < outer[i + 1]; ++e) t += value[e] * u[inner[e]];

@@ -42,6 +42,21 @@ Eigen::VectorXd random_vector(int n, std::mt19937& rng) {
 
 double relative(const Eigen::VectorXd& a, const Eigen::VectorXd& b) { return (a - b).norm() / b.norm(); }
 
+// The contact rows of m nodes (normal n = (0.8, 0.6), tangent (-0.6, 0.8) on each node's two
+// unknowns nodes[i], nodes[i] + 1): H, 2m x n, as the contact tests use it.
+SparseMatrix contact_rows(int n, const int* nodes, int m) {
+  std::vector<Eigen::Triplet<double, int>> t;
+  for (int i = 0; i < m; ++i) {
+    t.emplace_back(2 * i, nodes[i], 0.8);
+    t.emplace_back(2 * i, nodes[i] + 1, 0.6);
+    t.emplace_back(2 * i + 1, nodes[i], -0.6);
+    t.emplace_back(2 * i + 1, nodes[i] + 1, 0.8);
+  }
+  SparseMatrix h(2 * m, n);
+  h.setFromTriplets(t.begin(), t.end());
+  return h;
+}
+
 std::vector<double> to_std(const Eigen::VectorXd& v) { return std::vector<double>(v.data(), v.data() + v.size()); }
 
 TEST(SparseSpd, SolveEqualsDenseSolve) {
@@ -283,15 +298,7 @@ TEST(ContactStep, SparseLoadAndMotionHaveTheWholeBits) {
   SparseMatrix a = grid_laplacian(10, 8, 0.03);
   const int n = a.rows(), m = 5;
   const int nodes[m] = {2, 17, 33, 50, 66};
-  std::vector<Eigen::Triplet<double, int>> t;
-  for (int i = 0; i < m; ++i) {
-    t.emplace_back(2 * i, nodes[i], 0.8);
-    t.emplace_back(2 * i, nodes[i] + 1, 0.6);
-    t.emplace_back(2 * i + 1, nodes[i], -0.6);
-    t.emplace_back(2 * i + 1, nodes[i] + 1, 0.8);
-  }
-  SparseMatrix h(2 * m, n);
-  h.setFromTriplets(t.begin(), t.end());
+  const SparseMatrix h = contact_rows(n, nodes, m);
   std::vector<double> free(n, 1.0);
   sma::SpdFactor k;
   k.factorize(a);
@@ -324,15 +331,7 @@ TEST(ContactStep, OneBackSolveEqualsTheTwoSolveDefinition) {
   SparseMatrix a = grid_laplacian(10, 8, 0.03);
   const int n = a.rows(), m = 5;
   const int nodes[m] = {2, 17, 33, 50, 66};
-  std::vector<Eigen::Triplet<double, int>> t;
-  for (int i = 0; i < m; ++i) {
-    t.emplace_back(2 * i, nodes[i], 0.8);
-    t.emplace_back(2 * i, nodes[i] + 1, 0.6);
-    t.emplace_back(2 * i + 1, nodes[i], -0.6);
-    t.emplace_back(2 * i + 1, nodes[i] + 1, 0.8);
-  }
-  SparseMatrix h(2 * m, n);
-  h.setFromTriplets(t.begin(), t.end());
+  const SparseMatrix h = contact_rows(n, nodes, m);
   std::vector<double> free(n, 1.0);
   free[nodes[0] + 1] = 0.0;  // a support under a contact row: S must mask it
   free[40] = 0.0;
