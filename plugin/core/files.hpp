@@ -47,7 +47,17 @@ inline std::string make_directory(const std::string& path) {
   if (path.empty()) return "the empty string is not a directory name";
   std::error_code ec;
   fs::create_directories(path, ec);
-  if (ec) return "cannot create the directory " + path + ": " + reason(ec);
+  if (ec) {
+    // A symbolic link to a missing target on the way says "File exists": name the link instead.
+    for (fs::path p = fs::path(path); !p.empty(); p = p.parent_path()) {
+      std::error_code lec;
+      if (fs::is_symlink(fs::symlink_status(p, lec)) && !fs::exists(p, lec))
+        return "cannot create the directory " + path + ": " + p.string() + " is a symbolic link to " +
+               fs::read_symlink(p, lec).string() + ", which does not exist";
+      if (p == p.parent_path()) break;
+    }
+    return "cannot create the directory " + path + ": " + reason(ec);
+  }
   if (!fs::is_directory(path, ec)) return "cannot create the directory " + path + ": a file of that name exists";
   return {};
 }

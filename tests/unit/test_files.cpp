@@ -54,6 +54,15 @@ TEST(Files, ErrorsNameThePath) {
   const std::string error = files::make_directory(t / "file");
   EXPECT_NE(error.find(t / "file"), std::string::npos) << error;
   EXPECT_NE(files::rename_file(t / "missing", t / "x").find(t / "x"), std::string::npos);
+  // A link to a missing target, as the folder or on its way: the link and its target are named
+  // (the system's message was "File exists").
+  fs::create_symlink(t / "gone", t / "dangling");
+  for (const std::string& dir : {t / "dangling", t / "dangling" + "/sub"}) {
+    const std::string e = files::make_directory(dir);
+    EXPECT_NE(e.find(t / "dangling" + " is a symbolic link to " + t / "gone" + ", which does not exist"),
+              std::string::npos) << e;
+  }
+  EXPECT_FALSE(fs::exists(t / "gone"));
 }
 
 TEST(Files, RemoveMatchingStaysInsideTheFolder) {
