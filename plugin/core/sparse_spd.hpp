@@ -89,25 +89,17 @@ class SpdFactor {
   // reads the contact rows' motion off z and adds the reactions' load to it): z = L^-1 P b, then
   // x = P' L^-T D^-1 z. backward(forward(b)) is solve(b), operation for operation.
   Eigen::VectorXd forward(span<const double> b) const {
-    check_size(b.size(), "right-hand side");
-    Eigen::Map<const Eigen::VectorXd> bb(b.begin(), n_);
-    Eigen::VectorXd z = ldlt_.permutationP().size() ? Eigen::VectorXd(ldlt_.permutationP() * bb) : Eigen::VectorXd(bb);
-    ldlt_.matrixL().solveInPlace(z);
+    Eigen::VectorXd z;
+    forward_into(b, z);
     return z;
   }
   void backward(const Eigen::VectorXd& z, span<double> x) const {
-    check_size((std::size_t)z.size(), "forward-solved vector");
-    check_size(x.size(), "solution");
-    Eigen::VectorXd t = ldlt_.vectorD().asDiagonal().inverse() * z;
-    ldlt_.matrixU().solveInPlace(t);
-    Eigen::Map<Eigen::VectorXd> xx(x.begin(), n_);
-    if (ldlt_.permutationPinv().size()) xx = ldlt_.permutationPinv() * t;
-    else xx = t;
+    Eigen::VectorXd t = z;
+    backward_in_place(t, x);
   }
-  // forward() and backward() on the caller's work vector z, for a caller that solves many times
-  // (the step solver): no allocation once z has the size, the permutations by index, the same
-  // values (backward_in_place(forward_into(b)) is solve(b), operation for operation); z is
-  // overwritten by backward_in_place.
+  // The same on the caller's work vector z, for a caller that solves many times (the step
+  // solver): no allocation once z has the size, the permutations by index (Eigen's permutation
+  // products' values); z is overwritten by backward_in_place.
   void forward_into(span<const double> b, Eigen::VectorXd& z) const {
     check_size(b.size(), "right-hand side");
     z.resize(n_);
