@@ -974,8 +974,6 @@ long ContactRecordSlip(KN<double>* const& slip, KN<double>* const& reactions, do
   });
 }
 
-// CSV rows at the stream's precision in the characters `f << x` writes (plugin/core/output.hpp):
-// a row's values comma-separated (no line end), or every row of a table, each ended by a line end.
 long AreaFractions(KN<double>* const& chi, KN<double>* const& area, KN<double>* const& fractions) {
   return guarded("AreaFractions", [&] {
     double f[3];
@@ -1005,6 +1003,8 @@ long ContactHeatExchange(KNM<double>* const& table, KN<double>* const& r, long c
   });
 }
 
+// CSV rows at the stream's precision in the characters `f << x` writes (plugin/core/output.hpp):
+// a row's values comma-separated (no line end), or every row of a table, each ended by a line end.
 int CsvPrecision(std::ostream* f) {
   if ((f->flags() & std::ios::floatfield) != std::ios::fmtflags(0) || (f->flags() & std::ios::showpoint))
     throw std::invalid_argument("the stream must print reals in the default format (no fixed, scientific or showpoint)");

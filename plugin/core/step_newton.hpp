@@ -527,7 +527,7 @@ class StepSolver {
     const double scale = p_.latent_scale;
     // Heat: mask .* (latent (scale w)); with k the source scale w +- (k / dt) w.
     work_.heat.setZero(nodes);
-    double* const heat = work_.heat.data();  // (local pointers: see evaluate)
+    double* const heat = work_.heat.data();  // (local pointers: see add_scaled_columns)
     const int* outer = p_.latent.outerIndexPtr();
     const int* inner = p_.latent.innerIndexPtr();
     const double* value = p_.latent.valuePtr();
@@ -1179,8 +1179,9 @@ class StepSolver {
       }
       const Eigen::Index k = (Eigen::Index)block.size();
       bool accepted = false;
-      double t = 1.0;
+      double t = 1.0, taken = t;  // the length tried last (the accepted one)
       for (int halving = 0; halving < 20 && !accepted; ++halving, t *= 0.5) {
+        taken = t;
         Eigen::VectorXd moved = beta;
         for (Eigen::Index a = 0; a < k; ++a) {
           const Eigen::Index i = block[(std::size_t)a];
@@ -1198,7 +1199,7 @@ class StepSolver {
         std::fprintf(set.trace,
                      "step iteration %d: dense newton move (%ld points, linearised law to %.1e, length %g), %s, residual "
                      "%.3e, %d evaluations, %d products\n",
-                     stats_.iterations, (long)k, phi_norm, accepted ? 2 * t : t, accepted ? "taken" : "no fall",
+                     stats_.iterations, (long)k, phi_norm, taken, accepted ? "taken" : "no fall",
                      s.residual_norm, stats_.evaluations, stats_.products);
       if (!accepted) return false;
       ++stats_.dense_steps;
