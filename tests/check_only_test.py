@@ -7,8 +7,8 @@ earlier run leaves (a manifest listing a summary.json, and that file), asserts: 
 "<script>: options checked (-checkonly 1): a run would write <folder>"; the folder afterwards
 holding exactly those two files, byte for byte (no lock, no partial file: nothing of the script
 comes before its claim of the folder). Then that a bad option still fails with its message in
-this mode (sleeve-radial -g -5, exit 1), and that -checkonly takes only the value 1. make ensemble
-and the sweeps rely on this (they check their runs so before taking their own folder).
+this mode (sleeve-radial -g -5, exit 1), that -checkonly takes only 1 or 0 (0: a run), and that
+tools/ff drops FreeFEM's exit trailer after the check. make ensemble and the sweeps rely on this (they check their runs so before taking their own folder).
 Records results/checks/check_only.json.
 """
 import os

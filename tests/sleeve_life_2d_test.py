@@ -34,8 +34,6 @@ CIRCLE = ["-pipeA", "0.0505", "-pipeB", "0.0505"]
 QUICK = ["-quiet", "1", "-vtkevery", "0"]
 
 
-
-
 def ran(out, done, what):
     check(done.returncode == 0, f"{what} ran (exit {done.returncode})")
     if done.returncode != 0:

@@ -46,8 +46,6 @@ from checklib import run_scene_captured as run, summary_of as summary  # noqa: E
 COARSE = ["-nr", "20", "-dt", "1", "-quiet", "1"]
 
 
-
-
 def history(out):
     h = rows(os.path.join(out, "history.csv"))
     return {key: [float(r[key]) for r in h] for key in h[0]}

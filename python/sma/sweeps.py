@@ -21,6 +21,7 @@ written): a value it refuses stops the sweep before the folder is taken. A run t
 (a loop that does not converge) stops nothing else; it is named at the end.
 """
 import concurrent.futures
+import contextlib
 import csv
 import itertools
 import json
@@ -409,31 +410,51 @@ def check_grid(scene, grid, fixed):
     return params, texts
 
 
+def grid_runs(params, grid, jobs):
+    """The runs of `grid` ({param: [values]}): (each parameter's value texts, the runs' texts and
+    values in the grid's order, one tuple a run, and how many run at a time: `jobs`, at most the
+    cores and the runs)."""
+    texts = [[text_of(v) for v in grid[p]] for p in params]
+    combos = list(itertools.product(*texts))
+    values = list(itertools.product(*[grid[p] for p in params]))
+    return texts, combos, values, max(1, min(jobs, os.cpu_count() or 1, len(combos)))
+
+
+def run_label(params, combo):
+    """A run named by its values, as on a command line: "-g 1000 -dt 0.1"."""
+    return " ".join(f"-{p} {v}" for p, v in zip(params, combo))
+
+
+@contextlib.contextmanager
+def stoppable_pool(jobs):
+    """A pool of `jobs` threads (each one waits on its FreeFEM process) that, when the caller's
+    block is left by an exception (a refused run, a notebook's KeyboardInterrupt), starts no queued
+    run and stops the running ones before the exception goes on."""
+    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+        try:
+            yield pool
+        except BaseException:
+            pool.shutdown(wait=False, cancel_futures=True)
+            children.stop_running()
+            raise
+
+
 def check_runs(out, scene, params, grid, fixed, jobs):
     """Checks every run of the grid (driver.check: the scene's check-only mode, nothing written),
     `jobs` at a time, before the caller takes `out`: a run that refused its options only after
     the sweep's folder was taken came after an earlier sweep's results there were deleted
     (ARGS='-gpipe -5'). Raises SceneError naming the first refused run's values and its error."""
-    texts = [[text_of(v) for v in grid[p]] for p in params]
-    combos = list(itertools.product(*texts))
-    values = list(itertools.product(*[grid[p] for p in params]))
-    jobs = max(1, min(jobs, os.cpu_count() or 1, len(combos)))
+    _, combos, values, jobs = grid_runs(params, grid, jobs)
 
     def one(i):
         driver.check(scene, run_folder(out, params, combos[i]), **fixed, **dict(zip(params, values[i])))
-    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+    with stoppable_pool(jobs) as pool:
         futures = [pool.submit(one, i) for i in range(len(combos))]
-        try:
-            for i, future in enumerate(futures):  # in the grid's order: the first refused run is named
-                try:
-                    future.result()
-                except SceneError as e:
-                    label = " ".join(f"-{p} {v}" for p, v in zip(params, combos[i]))
-                    raise SceneError(f"{label}: {e}") from None
-        except BaseException:
-            pool.shutdown(wait=False, cancel_futures=True)
-            children.stop_running()
-            raise
+        for i, future in enumerate(futures):  # in the grid's order: the first refused run is named
+            try:
+                future.result()
+            except SceneError as e:
+                raise SceneError(f"{run_label(params, combos[i])}: {e}") from None
 
 
 def run_grid(out, scene, params, grid, fixed, jobs, record=None, say=print, warn=None):
@@ -445,12 +466,9 @@ def run_grid(out, scene, params, grid, fixed, jobs, record=None, say=print, warn
     progress and the errors (the command line's console)."""
     import sys
     warn = warn or (lambda line: print(line, file=sys.stderr, flush=True))
-    texts = [[text_of(v) for v in grid[p]] for p in params]
-    combos = list(itertools.product(*texts))
-    values = list(itertools.product(*[grid[p] for p in params]))
-    jobs = max(1, min(jobs, os.cpu_count() or 1, len(combos)))
+    texts, combos, values, jobs = grid_runs(params, grid, jobs)
     folders = [run_folder(out, params, c) for c in combos]
-    label = [" ".join(f"-{p} {v}" for p, v in zip(params, c)) for c in combos]
+    label = [run_label(params, c) for c in combos]
     say(f"sweep: {scene} " + " x ".join(f"-{p} over {' '.join(t)}" for p, t in zip(params, texts))
         + f" ({jobs} at a time) into {out}/", flush=True)
 
@@ -459,22 +477,16 @@ def run_grid(out, scene, params, grid, fixed, jobs, record=None, say=print, warn
                           **dict(zip(params, values[i])))
 
     failures = {}
-    # Threads suffice: each one waits on its FreeFEM process.
-    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+    with stoppable_pool(jobs) as pool:
         futures = {pool.submit(one, i): i for i in range(len(combos))}
-        try:
-            for future in concurrent.futures.as_completed(futures):
-                i = futures[future]
-                try:
-                    future.result()
-                    say(f"sweep: {label[i]} done", flush=True)
-                except SceneError as e:
-                    failures[i] = str(e)
-                    warn(f"error: {label[i]}: {e}")
-        except BaseException:  # a KeyboardInterrupt (a notebook's): no queued run starts, the running ones stop
-            pool.shutdown(wait=False, cancel_futures=True)
-            children.stop_running()
-            raise
+        for future in concurrent.futures.as_completed(futures):
+            i = futures[future]
+            try:
+                future.result()
+                say(f"sweep: {label[i]} done", flush=True)
+            except SceneError as e:
+                failures[i] = str(e)
+                warn(f"error: {label[i]}: {e}")
     results = {}
     for i in range(len(combos)):
         if i not in failures:

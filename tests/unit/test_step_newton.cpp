@@ -59,6 +59,30 @@ std::vector<StepRecord> run(RadialSleeve& rs, const sma::StepSettings& set,
   return records;
 }
 
+// The first converged step of the radial sleeve's run (default settings) whose fractions chi and
+// contact reactions r satisfy wanted(chi, r): its chi and step problem, `found` false when none.
+struct RunState {
+  bool found = false;
+  Eigen::VectorXd chi;
+  sma::StepProblem problem;
+};
+template <class Wanted>
+RunState first_state(RadialSleeve& rs, Wanted wanted) {
+  RunState out;
+  run(rs, sma::StepSettings{}, [&](const sma::StepProblem& p, const Eigen::VectorXd& chi, const Eigen::VectorXd&,
+                                   const Eigen::VectorXd&, const Eigen::VectorXd& r) {
+    if (!out.found && wanted(chi, r)) out.found = true, out.chi = chi, out.problem = p;
+  });
+  return out;
+}
+
+// How many points of chi are partly transformed (0 < |chi| < 1).
+int partly_transformed(const Eigen::VectorXd& chi) {
+  int partial = 0;
+  for (Eigen::Index e = 0; e < chi.size(); ++e) partial += std::fabs(chi[e]) > 0 && std::fabs(chi[e]) < 1;
+  return partial;
+}
+
 // The law's residual, the heat equation and the contact conditions at a converged step,
 // recomputed here from the step's definition.
 void expect_step_equations(const RadialSleeve& rs, const sma::StepProblem& p, const Eigen::VectorXd& chi,
@@ -96,18 +120,11 @@ TEST(StepNewton, LinearisationMatchesFiniteDifferences) {
   RadialSleeve rs;
   rs.build();
   // A state in contact with partly transformed points: run until the first step with both.
-  sma::StepSettings set;
-  Eigen::VectorXd chi_mid;
-  sma::StepProblem p_mid;
-  bool found = false;
-  std::vector<sma::StepProblem> keep;
-  run(rs, set, [&](const sma::StepProblem& p, const Eigen::VectorXd& chi, const Eigen::VectorXd&,
-                   const Eigen::VectorXd&, const Eigen::VectorXd& r) {
-    int partial = 0;
-    for (Eigen::Index e = 0; e < chi.size(); ++e) partial += std::fabs(chi[e]) > 0 && std::fabs(chi[e]) < 1;
-    if (!found && r[0] > 0 && partial >= 2) found = true, chi_mid = chi, p_mid = p;
-  });
-  ASSERT_TRUE(found);
+  const RunState mid = first_state(
+      rs, [](const Eigen::VectorXd& chi, const Eigen::VectorXd& r) { return r[0] > 0 && partly_transformed(chi) >= 2; });
+  ASSERT_TRUE(mid.found);
+  const Eigen::VectorXd& chi_mid = mid.chi;
+  const sma::StepProblem& p_mid = mid.problem;
   sma::StepResult stats;
   sma::StepSolver solver(p_mid, stats);
   const Eigen::VectorXd r0 = Eigen::VectorXd::Zero(2), g0 = Eigen::VectorXd::Zero(1);
@@ -177,20 +194,12 @@ Eigen::VectorXd force_derivative_reference(const sma::StepProblem& p, const sma:
 TEST(StepNewton, RestrictedProductHasTheWholeProductsBits) {
   RadialSleeve rs;
   rs.build();
-  sma::StepSettings set;
-  Eigen::VectorXd chi_mid;
-  sma::StepProblem p_mid;
-  bool found = false;
-  run(rs, set, [&](const sma::StepProblem& p, const Eigen::VectorXd& chi, const Eigen::VectorXd&,
-                   const Eigen::VectorXd&, const Eigen::VectorXd&) {
-    int partial = 0, none = 0;
-    for (Eigen::Index e = 0; e < chi.size(); ++e) {
-      partial += std::fabs(chi[e]) > 0 && std::fabs(chi[e]) < 1;
-      none += chi[e] == 0.0;
-    }
-    if (!found && partial >= 2 && none >= 3) found = true, chi_mid = chi, p_mid = p;
+  RunState mid = first_state(rs, [](const Eigen::VectorXd& chi, const Eigen::VectorXd&) {
+    return partly_transformed(chi) >= 2 && (chi.array() == 0.0).count() >= 3;
   });
-  ASSERT_TRUE(found);
+  ASSERT_TRUE(mid.found);
+  const Eigen::VectorXd& chi_mid = mid.chi;
+  sma::StepProblem& p_mid = mid.problem;
   p_mid.contact = nullptr;  // the reference's mechanics: one stiffness solve
   const Eigen::Index n = chi_mid.size();
   std::mt19937 gen(11);
