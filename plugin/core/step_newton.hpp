@@ -175,7 +175,10 @@ namespace step_detail {
 // out += (scale m) x for a column-major sparse m, x given per column by x_of(j): Eigen's sparse *
 // dense product order (column by column from 0; a scale on the product scales the matrix's values,
 // and a scale of 1 changes no bit), through raw pointers (a store through a vector's operator[]
-// could alias its own members, which the loop would otherwise reload at every term).
+// could alias its own members, which the loop would otherwise reload at every term). A column
+// whose x is zero is skipped: its terms are exact zeros, which leave every sum (started at +0 by
+// the caller) as it is, so the bits are Eigen's; most columns are zero when few points transform
+// (the whole tail of a run: chi = 0).
 template <class ColumnValue>
 inline void add_scaled_columns(const SparseMatrix& m, double scale, ColumnValue x_of, double* out) {
   const int* const outer = m.outerIndexPtr();
@@ -183,6 +186,7 @@ inline void add_scaled_columns(const SparseMatrix& m, double scale, ColumnValue 
   const double* const value = m.valuePtr();
   for (Eigen::Index j = 0; j < m.outerSize(); ++j) {
     const double x = x_of(j);
+    if (x == 0.0) continue;
     for (int e = outer[j]; e < outer[j + 1]; ++e) out[inner[e]] += (scale * value[e]) * x;
   }
 }

@@ -38,7 +38,12 @@ void fraction_step_record(const ThermalLaw& law, double latent_rate, span<const 
     change[i] = (b - b_start[i]) * latent_rate;  // dchi = b - bStart; dchi *= rho L / dt
     b_start[i] = b;
   }
-  apply_latent(change.data(), load.begin());
+  // (no change, the whole tail of a run: Q 0 is +0 everywhere, the product's every sum of exact
+  // zeros started at +0)
+  if (std::any_of(change.begin(), change.end(), [](double c) { return c != 0.0; }))
+    apply_latent(change.data(), load.begin());
+  else
+    std::fill(load.begin(), load.end(), 0.0);
   apply_interp(temperature.begin(), at_points.data());
   for (std::size_t i = 0; i < n; ++i) stress[i] = law.alpha(at_points[i]) * chi[i];
 }
