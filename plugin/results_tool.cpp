@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
     return 1;
   }
   if (verb == "record" && argc == 3) {
-    std::vector<std::string> known;
+    sma::files::RecordedResults known;
     const std::string error = sma::files::record_result(argv[2], known);
     if (error.empty()) return 0;
     std::fprintf(stderr, "error: %s\n", error.c_str());

@@ -70,6 +70,8 @@
 //       (IEEE round to nearest even), in place; returns how many values changed.
 //   real SmaPluginVersion()  version stamp, checked by edp/lib/plugin.idp.
 //   real WallSeconds()       monotonic wall clock (s), for timings.
+//   string RealDigits(real x, long digits)   x as a stream of precision `digits` writes it (an
+//       ofstream's `f.precision(12); f << x`), for a text built once and written many times.
 // Result files, without a shell (plugin/core/files.hpp, json.hpp; edp/lib/output.idp wraps them):
 // each string function returns "" on success, else the reason naming the path.
 //   string FileMakeDirectory(string path)          mkdir -p
@@ -778,7 +780,7 @@ long RoundToFloat(KN<double>* const& x) {
   return changed;
 }
 
-double SmaPluginVersion() { return 15.0; }
+double SmaPluginVersion() { return 16.0; }
 
 // FreeFEM's time() has a resolution of one second and clock() counts CPU time; timings of the
 // scenes are wall-clock seconds from a monotonic clock.
@@ -792,6 +794,13 @@ string* NewString(Stack stack, const std::string& text) { return Add2StackOfPtr2
 // The reason the last StepSolveFraction stopped unconverged ("" after a converged step); the
 // argument is unused (FreeFEM's string functions of no argument need a Stack-less form).
 string* StepFailureMessage(Stack stack, long const&) { return NewString(stack, StepFailure()); }
+
+string* RealDigits(Stack stack, double const& x, long const& digits) {
+  std::ostringstream text;
+  text.precision(std::clamp(digits, 1L, 17L));
+  text << x;
+  return NewString(stack, text.str());
+}
 
 string* FileMakeDirectory(Stack stack, string* const& path) {
   return NewString(stack, sma::files::make_directory(*path));
@@ -830,8 +839,8 @@ void ReleaseClaimedFolders() {
   for (const auto& dir : ClaimedFolders()) sma::files::release_results(dir, (long)getpid());
 }
 // The entries this process has recorded in a manifest (files.hpp record_result).
-std::vector<std::string>& RecordedResults() {
-  static std::vector<std::string> known;
+sma::files::RecordedResults& RecordedResults() {
+  static sma::files::RecordedResults known;
   return known;
 }
 string* Claim(Stack stack, const std::string& dir, const std::string& scene, bool resume, const std::string& patterns) {
@@ -1083,6 +1092,7 @@ static void Load_Init() {
   Global.Add("StepFailureMessage", "(", new OneOperator1s_<S, long>(StepFailureMessage));
   Global.Add("FileMakeDirectory", "(", new OneOperator1s_<S, S>(FileMakeDirectory));
   Global.Add("FileRename", "(", new OneOperator2s_<S, S, S>(FileRename));
+  Global.Add("RealDigits", "(", new OneOperator2s_<S, double, long>(RealDigits));
   Global.Add("FileRemoveMatching", "(", new OneOperator2s_<S, S, S>(FileRemoveMatching));
   Global.Add("FileKind", "(", new OneOperator1_<long, S>(FileKind));
   Global.Add("FileAbsolute", "(", new OneOperator1s_<S, S>(FileAbsolute));

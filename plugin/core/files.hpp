@@ -22,6 +22,7 @@
 #include <string>
 #include <sys/types.h>
 #include <unistd.h>
+#include <unordered_set>
 #include <vector>
 
 namespace sma::files {
@@ -354,11 +355,20 @@ inline bool manifest_of(const std::string& path, fs::path& dir, std::string& rel
   return false;
 }
 
+// What one process has recorded: the manifest entries it has read or written (as "dir/entry")
+// and the folders whose manifest it has read. A manifest is read once per process, so recording
+// a run's thousandth frame costs what its first did (reading it at every new name, a path parsed
+// per line, grew as the square of the frames).
+struct RecordedResults {
+  std::unordered_set<std::string> entries, folders_read;
+  void clear() { entries.clear(), folders_read.clear(); }
+};
+
 // Records that the suite writes `path`: its name goes into the manifest of the nearest results
 // folder above it (nothing when there is none: a verification record, a documentation figure).
-// `known` caches the entries of manifests this process read or wrote (the per-step calls read
-// no file); another process's additions may be written a second time, which a reader ignores.
-inline std::string record_result(const std::string& path, std::vector<std::string>& known) {
+// Another process's additions since this one read the manifest may be listed a second time,
+// which a reader ignores (repeats are allowed).
+inline std::string record_result(const std::string& path, RecordedResults& known) {
   std::string file = path;
   bool folder = false;  // a path ending in '/' is a folder, listed as `name/`
   while (file.size() > 1 && file.back() == '/') {
@@ -370,13 +380,17 @@ inline std::string record_result(const std::string& path, std::vector<std::strin
   if (!manifest_of(file, dir, rel)) return {};
   if (folder) rel += "/";
   const std::string key = (dir / rel).string();
-  if (std::find(known.begin(), known.end(), key) != known.end()) return {};
-  Manifest m;
-  if (auto e = read_manifest(dir, m); !e.empty()) return e;
-  if (m.legacy) return {};  // an older marker: the next claim refuses the folder anyway
-  if (std::find(m.entries.begin(), m.entries.end(), rel) == m.entries.end())
-    if (auto e = append_manifest(dir, rel); !e.empty()) return e;
-  known.push_back(key);
+  if (known.entries.count(key)) return {};
+  if (!known.folders_read.count(dir.string())) {
+    Manifest m;
+    if (auto e = read_manifest(dir, m); !e.empty()) return e;
+    if (m.legacy) return {};  // an older marker: the next claim refuses the folder anyway
+    for (const std::string& entry : m.entries) known.entries.insert((dir / entry).string());
+    known.folders_read.insert(dir.string());
+    if (known.entries.count(key)) return {};
+  }
+  if (auto e = append_manifest(dir, rel); !e.empty()) return e;
+  known.entries.insert(key);
   return {};
 }
 

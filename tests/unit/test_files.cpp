@@ -112,7 +112,7 @@ TEST(Files, ClaimRefusesAFolderThisSuiteDidNotWrite) {
 TEST(Files, OnlyTheManifestsEntriesAreReplaced) {
   Scratch t;
   const std::string d = t / "out";
-  std::vector<std::string> known;
+  files::RecordedResults known;
   ASSERT_EQ(files::claim_results(d, "sleeve-circular", getpid()), "");
   fs::create_directories(d + "/frames");
   for (const std::string name : {"summary.json", "fields-1.csv", "frames/step-1.vtu", "frames/"})
@@ -183,7 +183,7 @@ TEST(Files, AFolderOfAnOlderVersionIsTakenOnlyWithItsOwnOutputs) {
 TEST(Files, NestedResultsFoldersAreCheckedByTheirOwnManifest) {
   Scratch t;
   const std::string sweep = t / "sweep", run = t / "sweep/g=400";
-  std::vector<std::string> known;
+  files::RecordedResults known;
   ASSERT_EQ(files::claim_results(sweep, "sweep beam", getpid()), "");
   ASSERT_EQ(files::claim_results(run, "beam", getpid()), "");
   ASSERT_EQ(files::record_result(run + "/summary.json", known), "");
@@ -313,7 +313,7 @@ TEST(Files, ChecksumAndSealNameAChangedFile) {
 TEST(Files, LinksLookalikesAndOddNamesAreRefusedUntouched) {
   Scratch t;
   const std::string d = t / "out";
-  std::vector<std::string> known;
+  files::RecordedResults known;
   ASSERT_EQ(files::claim_results(d, "sleeve-radial", getpid()), "");
   ASSERT_EQ(files::record_result(d + "/history.csv.partial", known), "");
   touch(t / "users.csv", "mine");
