@@ -129,7 +129,7 @@ $(OOMGUARD): plugin/oomguard.c
 	@cc -O2 -shared -fPIC -Wall -Werror plugin/oomguard.c -o $@
 $(PLUGIN): $(PLUGIN_SOURCES)
 	@mkdir -p plugin/build
-	@cd plugin/build && ff-c++ CXX=../../tools/cxx17 ../sma.cpp -I/usr/include/eigen3 -I.. > build.log 2>&1 \
+	@cd plugin/build && ff-c++ CXX=../../tools/cxx17 ../sma.cpp -I/usr/include/eigen3 -I/usr/include/suitesparse -I.. -lcholmod > build.log 2>&1 \
 	  || { cat build.log; echo "error: building the plugin failed (plugin/build/build.log)" >&2; exit 1; }
 	@test -f $(PLUGIN) || { cat plugin/build/build.log; echo "error: ff-c++ made no $(PLUGIN)" >&2; exit 1; }
 	@echo "built $(PLUGIN)"

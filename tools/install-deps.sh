@@ -12,13 +12,15 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 # 16.7 MB with libgetfem5 and libqhull8.0, plus python3-scipy (62 MB) where it is not installed yet.
 # python3-pandas, python3-pip, python3-setuptools and python3-wheel: the sma package (python/sma,
 # `make python`: an editable install, offline, by Debian's pip and setuptools; its DataFrames).
+# libsuitesparse-dev: CHOLMOD's nested-dissection ordering, which the plugin's sparse LDL' uses
+# above 50 000 unknowns (plugin/core/sparse_spd.hpp).
 # jupyter-nbconvert (the `jupyter nbconvert` command, with python3-nbconvert, -nbclient, -nbformat)
 # and python3-ipykernel (the Python kernel, /usr/share/jupyter/kernels/python3 running
 # /usr/bin/python3): the lab notebook docs/tutorial/sleeve-lab.ipynb, executed headless by
 # tests/tutorial_test.py (`jupyter nbconvert --to notebook --execute`): 51 packages, 27 MB installed
 # with IPython, zmq and tornado on Debian 12. jupyter-notebook (the browser front end) is not
 # needed for that; a student who opens the notebook installs it.
-packages="freefem++ libfreefem++-dev gmsh libeigen3-dev libgtest-dev libsiconos-numerics-dev cmake make g++
+packages="freefem++ libfreefem++-dev gmsh libeigen3-dev libsuitesparse-dev libgtest-dev libsiconos-numerics-dev cmake make g++
 python3-matplotlib python3-numpy python3-vtk9 openmpi-bin python3-getfem python3-pandas python3-pip
 python3-setuptools python3-wheel jupyter-nbconvert python3-ipykernel python3-nbformat python3-nbclient"
 
