@@ -523,7 +523,8 @@ Eigen::VectorXd Segment(KN<double>* a, long start, long length, const char* what
 // (FreeFEM's plugin functions take at most 8 arguments); table = contact.idp's contactTable
 // (column 4, the slip thresholds, in/out); contact = [tangentFree; mu; r (2 per node, in/out)];
 // chi in/out; T, u out; stats = [converged, iterations, gradient steps, evaluations, products,
-// heat solves, stiffness solves, PSOR sweeps, slip iterations, residual]. Returns the iterations.
+// heat solves, stiffness solves, PSOR sweeps, slip iterations, residual, curvature moves, saddle
+// moves, dense Newton moves]. Returns the iterations.
 // settings[20] (optional) = 1: a step that does not converge leaves chi, u and the table's slip
 // thresholds as they came in (the step's start, for the caller's fall-back: no copies of them).
 long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM<double>* const& table,
@@ -576,7 +577,7 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
       throw std::invalid_argument("the contact table must have 6 columns and a row per contact node (" +
                                   std::to_string(m) + ", from contact's length)");
     if (contact->N() != 4 * m) throw std::invalid_argument("contact must hold tangentFree, mu and r: 4 values per node");
-    if (stats->N() != 12) throw std::invalid_argument("stats must have 12 entries");
+    if (stats->N() != 13) throw std::invalid_argument("stats must have 13 entries");
     p.gap.resize(m);
     p.slip_reference.resize(m);
     Eigen::VectorXd threshold(m);
@@ -600,11 +601,12 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
       for (long i = 0; i < dofs; ++i) (*u)[i] = displacement[i];
       for (long i = 0; i < m; ++i) (*table)(i, 4L) = threshold[i];
     }
-    const double values[12] = {res.converged ? 1.0 : 0.0, (double)res.iterations, (double)res.gradient_steps,
+    const double values[13] = {res.converged ? 1.0 : 0.0, (double)res.iterations, (double)res.gradient_steps,
                                (double)res.evaluations, (double)res.products, (double)res.heat_solves,
                                (double)res.stiffness_solves, (double)res.psor_sweeps, (double)res.slip_iterations,
-                               res.residual, (double)res.curvature_steps, (double)res.saddle_steps};
-    for (int k = 0; k < 12; ++k) (*stats)[k] = values[k];
+                               res.residual, (double)res.curvature_steps, (double)res.saddle_steps,
+                               (double)res.dense_steps};
+    for (int k = 0; k < 13; ++k) (*stats)[k] = values[k];
     StepFailure() = res.failure;
     return (long)res.iterations;
   });

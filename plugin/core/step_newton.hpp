@@ -150,6 +150,9 @@ struct StepResult {
   int iterations = 0, gradient_steps = 0, curvature_steps = 0, saddle_steps = 0, variant_switches = 0, evaluations = 0,
       products = 0;
   int dense_steps = 0;  // the dense Newton moves of a step that stalled (StepSettings::dense_block)
+  // Active-set rounds of newton_direction that had every free point pinned (the release rule then
+  // applied without a solve).
+  int pinned_blocks = 0;
   int heat_solves = 0, stiffness_solves = 0, psor_sweeps = 0, slip_iterations = 0;
   double residual = 0.0;
   std::string failure;  // why it stopped unconverged (empty when converged)
@@ -982,14 +985,41 @@ class StepSolver {
     const Eigen::VectorXd weight = s.q.cwiseProduct(p_.area);  // D of deflation.hpp
     double first_rhs = 0;
     bool stable = false, saddle = false;
+    bool pinned_by_curvature = false;  // the last round moved along a Ritz vector
     Eigen::VectorXd model = cl.force;
     for (int round = 0; round < rounds; ++round) {
       std::vector<Eigen::Index> sub;
       for (Eigen::Index i = 0; i < n; ++i)
         if (cl.free[(std::size_t)i] && !pinned[(std::size_t)i]) sub.push_back(i);
-      if (sub.empty()) {
+      if (sub.empty() && pinned_by_curvature) {
         stable = true;
         break;
+      }
+      if (sub.empty()) {
+        // A stable round's move left the interval of every point still free (a 3-point block of
+        // sleeve-life -phasemodel fraction's step 1387 did): nothing to solve, but the release
+        // rule of the rounds still applies, or they would stop on pins the model force
+        // contradicts (there the moves then ping-ponged for 20 iterations). Released: the
+        // pinned points whose model force at the pinned move points back inside; none: the
+        // move solves the linearised step. (Rounds that pinned the last point along a Ritz
+        // vector stop as they did: their pins are the nonconvex active-set method's.)
+        ++stats_.pinned_blocks;
+        std::vector<char> next = pinned;
+        int released = 0;
+        for (Eigen::Index i = 0; i < n; ++i) {
+          if (!cl.free[(std::size_t)i]) continue;
+          const double end = beta[i] + d[i];
+          const bool at_hi = std::fabs(end - cl.hi[i]) <= 1e-14, at_lo = std::fabs(end - cl.lo[i]) <= 1e-14;
+          if ((at_hi && model[i] < 0) || (at_lo && model[i] > 0)) next[(std::size_t)i] = 0, ++released;
+        }
+        if (set.trace) std::fprintf(set.trace, "  round %d: every free point pinned, %d released\n", round, released);
+        if (released == 0 || std::find(seen.begin(), seen.end(), next) != seen.end()) {
+          stable = true;
+          break;
+        }
+        seen.push_back(next);
+        pinned = next;
+        continue;
       }
       const Eigen::Index k = (Eigen::Index)sub.size();
       Eigen::VectorXd rhs(k), scale(k);
@@ -1081,8 +1111,10 @@ class StepSolver {
         d[first] = end - beta[first];
         pinned[(std::size_t)first] = 1;
         model = cl.force + force_derivative(s, d, cl.upper);
+        pinned_by_curvature = true;
         continue;
       }
+      pinned_by_curvature = false;
       stable = true;
       for (Eigen::Index a = 0; a < k; ++a) d[sub[(std::size_t)a]] += g.x[a];
       model = cl.force + force_derivative(s, d, cl.upper);
