@@ -30,7 +30,7 @@ CASES = [("sleeve-circular", ["-mesh", "meshes/sleeve-coarse.msh", "-steps", "20
          ("sleeve-radial", ["-steps", "200"])]
 TIMING = ("wall_seconds", "backsolve_floor_seconds_per_step", "loop_over_floor",
           "stiffness_backsolve_seconds", "heat_backsolve_seconds", "backsolves_needed_seconds",
-          "loop_over_backsolves_needed", "transient_loop_over_backsolves_needed", "tail_loop_over_backsolves_needed")
+          "loop_over_backsolves_needed", "loop_over_backsolves_needed_transient", "loop_over_backsolves_needed_tail")
 
 
 def ff(args, fastclock, **kw):

@@ -38,7 +38,7 @@ CASES = [("sleeve-circular", ["-mesh", "meshes/sleeve-coarse.msh"]),
 COMMON = ["-steps", "300", "-quiet", "1"]
 TIMING = ("wall_seconds", "resumed_from_step", "backsolve_floor_seconds_per_step", "loop_over_floor",
           "stiffness_backsolve_seconds", "heat_backsolve_seconds", "backsolves_needed_seconds",
-          "loop_over_backsolves_needed", "transient_loop_over_backsolves_needed", "tail_loop_over_backsolves_needed")
+          "loop_over_backsolves_needed", "loop_over_backsolves_needed_transient", "loop_over_backsolves_needed_tail")
 
 
 def run(scene, out, *extra):

@@ -45,8 +45,8 @@ def measure(results, reference):
     # The back-solves the algorithm needed (one per DC iteration, one heat solve per fixed-point
     # iteration, at the run's own times) and the loop over them: what the scripts add.
     for key in ("stiffness_backsolve_seconds", "heat_backsolve_seconds", "backsolves_needed_seconds",
-                "loop_over_backsolves_needed", "transient_loop_over_backsolves_needed",
-                "tail_loop_over_backsolves_needed"):
+                "loop_over_backsolves_needed", "loop_over_backsolves_needed_transient",
+                "loop_over_backsolves_needed_tail"):
         results[f"sleeve_circular_1500_{key}"] = statistics.median(x[key] for _, x in default_runs)
     # Where the iterations fall: the transient (up to the step the ring is austenite for good) and the tail.
     with open(os.path.join(OUT, "circular-default", "history.csv")) as f:
@@ -160,9 +160,9 @@ def doc_time(r, w):
       f"`loop_over_backsolves_needed`): the rest is the interpreter's statements around them (perf: FreeFEM's "
       "evaluator, its sparse products, and the C++ exception FreeFEM throws at every func's `return`). Split at "
       f"the transient's end: the transient's loop is "
-      f"{r['sleeve_circular_1500_transient_loop_over_backsolves_needed']:.1f} times its back-solves (the steps that "
+      f"{r['sleeve_circular_1500_loop_over_backsolves_needed_transient']:.1f} times its back-solves (the steps that "
       f"iterate: the step solver's own work around its back-solves), the tail's "
-      f"{r['sleeve_circular_1500_tail_loop_over_backsolves_needed']:.1f} times (one evaluation a step: the time "
+      f"{r['sleeve_circular_1500_loop_over_backsolves_needed_tail']:.1f} times (one evaluation a step: the time "
       "loop's record of each step, its CSV rows, contact and chatter watch, weighs there).")
 
 
