@@ -463,14 +463,19 @@ TEST(StepNewton, GmresSolvesAndReportsAnUnstableOperator) {
 // dense moves the first step stops unsolved, with them (one move) every step satisfies its
 // equations. (With the paper's 0.5 mm interference steps 64-65 stalled there, 5 moves, until the
 // rounds released points at a block they pin whole: none stalls now.)
+// The radial sleeve at the paper's scale (a = 3000) with nr points and 1 s steps over 90 s, built.
+void paper_scale_one_second_steps(RadialSleeve& rs, int nr) {
+  rs.a = 3000;
+  rs.nr = nr;
+  rs.steps = 90;
+  rs.tend = 90;
+  rs.build();
+}
+
 TEST(StepNewton, DenseNewtonFinishesStalledSteps) {
   for (const int dense_block : {0, 128}) {
     RadialSleeve rs;
-    rs.a = 3000;
-    rs.steps = 90;
-    rs.tend = 90;
-    rs.nr = 20;
-    rs.build();
+    paper_scale_one_second_steps(rs, 20);
     sma::StepSettings set;
     set.stall = 1;
     set.dense_block = dense_block;
@@ -519,11 +524,7 @@ TEST(StepNewton, DenseNewtonFinishesStalledSteps) {
 // 8.1e-7, 1.1e-12): 3 iterations, 14 products, to the same solution.
 TEST(StepNewton, BlockPinnedWholeReleasesItsPoints) {
   RadialSleeve rs;
-  rs.a = 3000;
-  rs.nr = 4;
-  rs.steps = 90;
-  rs.tend = 90;
-  rs.build();
+  paper_scale_one_second_steps(rs, 4);
   rs.factor_heat(0.5);
   Eigen::VectorXd T(5), chi(4);  // the run's state at the step's start (no contact yet: r = 0)
   T << 252.41073609727684, 251.43397007827087, 251.80682668555616, 251.41480611908796, 252.4299300336144;
