@@ -1,12 +1,16 @@
 // A coarse space of smooth vectors over a large free block, the second level of a two-level right
-// preconditioner for step_newton.hpp's GMRES (newton_direction).
+// preconditioner for step_newton.hpp's GMRES (newton_direction). Off (StepSettings::coarse).
 //
-// Why: on a fine mesh the linearised step of a wide, partly transformed front has a continuum of
-// small eigenvalues (down to 3e-5 of the largest at 140 layers) whose eigenvectors are smooth over
-// the front: the eigenstrain's elastic and contact response nearly cancels the laminate term there.
-// Ritz vectors of one solve do not span them for the next (deflation.hpp); smooth vectors built from
-// the mesh do, whatever the solve: piecewise-constant vectors on aggregates of neighbouring free
-// points (points sharing a heat node through the interpolation's rows), z_j = 1 on aggregate j.
+// Why it was built: on a fine mesh the linearised step of a wide, partly transformed front has a
+// continuum of small eigenvalues (down to 3e-5 of the largest at 140 layers), which Ritz vectors of
+// one solve do not span for the next (deflation.hpp); smooth vectors built from the mesh would, if
+// those modes were smooth: (smoothed) piecewise-constant vectors on aggregates of neighbouring free
+// points (points sharing a heat node through the interpolation's rows).
+// Why it is off: they are not. On the scaling transient the slowest Ritz vectors have under 1 % of
+// their D-norm in the coarse span (eigenstrains oscillating at the element scale, which P1
+// displacements relax as well as smooth ones), and the coarse products made the solves dearer
+// (docs/measurements.md#m-coarse-space). It does what it should where the slow modes are smooth
+// (tests/unit/test_coarse_space.cpp: a grid Laplacian's GMRES products halved).
 //
 // The preconditioner: Q a D-orthonormal basis of the aggregates' vectors on the solve's points,
 // E = Q' D A Q (symmetric part, eigenvalues mu, eigenvectors V), D = diag(q area) as in deflation.hpp,
