@@ -73,6 +73,7 @@
 #include <vector>
 
 #include "contact_step.hpp"
+#include "coarse_space.hpp"
 #include "deflation.hpp"
 #include "material.hpp"
 #include "psor.hpp"
@@ -131,6 +132,19 @@ struct StepSettings {
   // one solve are not eigenvectors of the next rounds' operators (other free points); on the
   // paper-scale runs it moves the curves' extrema by up to 1.2 % (docs/measurements.md#m-deflation).
   int recycle = 0, recycle_from = 16, recycle_harvest = 8;
+  // Two-level preconditioner (coarse_space.hpp), off: on (coarse), it serves the linearised solves
+  // of blocks of at least coarse_points unpinned points (above the 6480 points of the largest
+  // default mesh, sleeve-half: no default run can reach it) once a solve of such a block in the
+  // same step has taken coarse_after GMRES iterations (0: from the first), with smoothed aggregates
+  // of about coarse_aggregate points (coarse_smooth averaging passes), one product each per Newton
+  // iteration; coarse_additive: P = I + Q |E|^-1 Q' D instead of (I - Q Q' D) + Q |E|^-1 Q' D. It
+  // replaces the recycled deflation on the blocks it serves. Off because it did not cut products
+  // on the scaling transient (108 layers 812 -> 901, 140: 1479 -> 1832 with plain aggregates): the
+  // slowest Ritz vectors are not smooth, the coarse span holds 1-2 % of them
+  // (docs/measurements.md#m-coarse-space).
+  bool coarse = false;
+  int coarse_points = 8000, coarse_after = 40, coarse_aggregate = 400, coarse_smooth = 8;
+  bool coarse_additive = false;
   bool saddle_newton = true;  // Newton moves to a stationary point that is not a minimum of W (solve)
   int stall = 10;  // iterations without halving the residual that stop the step unconverged
   // The same with the dissipation k > 0: the free ring's first transforming step (its uniform
@@ -987,6 +1001,7 @@ class StepSolver {
     bool stable = false, saddle = false;
     bool pinned_by_curvature = false;  // the last round moved along a Ritz vector
     Eigen::VectorXd model = cl.force;
+    CoarseSpace coarse;  // of this linearisation (built at its first hard round)
     for (int round = 0; round < rounds; ++round) {
       std::vector<Eigen::Index> sub;
       for (Eigen::Index i = 0; i < n; ++i)
@@ -1049,13 +1064,24 @@ class StepSolver {
       // Right-preconditioned by the deflation space of the step's earlier solves (deflation.hpp:
       // the same residual, the same inertia; P = I when recycling is off); its solution and
       // Ritz vector mapped back by P. Stale images (a new linearisation) are recomputed first.
-      if (recycled_.stale && !recycled_.empty()) refresh(recycled_, sub, weight, apply);
-      const DeflationPreconditioner pre = deflation_on(recycled_, sub, weight);
+      const bool large = set.coarse && k >= set.coarse_points;
+      if (large && coarse.empty() && (set.coarse_after <= 0 || hard_large_solve_)) {
+        if (interp_rows_.rows() != p_.interp.rows()) {
+          interp_rows_ = p_.interp;
+          interp_rows_.makeCompressed();
+        }
+        const Aggregates agg = aggregate_points(interp_rows_, p_.interp, sub, set.coarse_aggregate);
+        coarse = build_coarse(sub, coarse_vectors(interp_rows_, sub, agg, set.coarse_smooth), apply);
+      }
+      if (coarse.empty() && recycled_.stale && !recycled_.empty()) refresh(recycled_, sub, weight, apply);
+      const DeflationPreconditioner pre =
+          coarse.empty() ? deflation_on(recycled_, sub, weight) : coarse_on(coarse, sub, weight, set.coarse_additive);
       auto preconditioned = [&](const Eigen::VectorXd& y) { return pre.empty() ? apply(y) : apply(pre.apply(y)); };
       step_detail::GmresResult g =
           step_detail::gmres(preconditioned, rhs, rtol, set.gmres_maxit, !saddle_round, absolute,
                              saddle_round ? 64 : std::numeric_limits<int>::max(),
                              recycled_.capacity > 0 ? set.recycle_harvest : 0);
+      if (large && g.iterations >= set.coarse_after) hard_large_solve_ = true;
       if (!pre.empty()) {
         g.x = pre.apply(g.x);
         g.finite = g.x.allFinite();
@@ -1078,9 +1104,9 @@ class StepSolver {
         recycle(recycled_, vectors, images, weight);
       }
       if (set.trace)
-        std::fprintf(set.trace, "  round %d: %ld unpinned, gmres %d its (%s), smallest ritz %.3e, rhs %.3e, %ld deflated\n",
+        std::fprintf(set.trace, "  round %d: %ld unpinned, gmres %d its (%s), smallest ritz %.3e, rhs %.3e, %ld %s\n",
                      round, (long)k, g.iterations, g.converged ? "converged" : "stopped", g.smallest_ritz_real, rhs.norm(),
-                     (long)pre.q.cols());
+                     (long)pre.q.cols(), coarse.empty() ? "deflated" : "coarse");
       if (!g.finite && g.smallest_ritz_real > 0) return Gradient;
       // A converged solve whose correction lowers the model's energy is taken as a Newton
       // correction even when a Ritz value came out non-positive: near a neutral mode round-off
@@ -1349,6 +1375,8 @@ class StepSolver {
   const StepProblem& p_;
   StepResult& stats_;
   RecycledSpace recycled_;  // over the step's linearised solves (newton_direction)
+  // A solve of a block of StepSettings::coarse_points took coarse_after GMRES iterations this step.
+  bool hard_large_solve_ = false;
   Workspace work_;
   RowMajorMatrix interp_rows_;       // p_.interp by rows, made by the step's first product
   std::vector<Eigen::Index> all_;    // 0 .. n-1 (force_derivative's support)

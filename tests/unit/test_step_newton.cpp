@@ -579,3 +579,43 @@ TEST(StepNewton, LinearisedLawSolvedOnAnIndefiniteBlock) {
   // The law may have other solutions for an indefinite M; the planted one is found in most trials.
   EXPECT_GE(solved, 15);
 }
+
+// The coarse space's gate (StepSettings::coarse_points): a run whose blocks stay below it is the
+// same bit for bit as one with the coarse space off; with it on from the first block of 2 points
+// (aggregates of 4 smoothed once, no hard solve needed first), every step still converges to the step's
+// tolerance and the pressure history is the same within it.
+TEST(StepNewton, CoarseSpaceGateAndSameSteps) {
+  RadialSleeve rs;
+  rs.build();
+  auto history = [&](const sma::StepSettings& set) {
+    return run(rs, set, [&](const sma::StepProblem& p, const Eigen::VectorXd& chi, const Eigen::VectorXd& T,
+                            const Eigen::VectorXd& u, const Eigen::VectorXd& r) {
+      expect_step_equations(rs, p, chi, T, u, r, set.tol);
+    });
+  };
+  sma::StepSettings off;
+  ASSERT_FALSE(off.coarse);  // off by default
+  sma::StepSettings gated;  // on, at the default gate, above the nr = 40 points
+  gated.coarse = true, gated.coarse_after = 0;
+  ASSERT_GT(gated.coarse_points, rs.nr);
+  sma::StepSettings on;
+  on.coarse = true, on.coarse_points = 2, on.coarse_after = 0, on.coarse_aggregate = 4, on.coarse_smooth = 1;
+  const std::vector<StepRecord> a = history(off), b = history(gated), c = history(on);
+  ASSERT_EQ((int)a.size(), rs.steps);
+  ASSERT_EQ(b.size(), a.size());
+  ASSERT_EQ(c.size(), a.size());
+  int products_a = 0, products_c = 0;
+  double worst = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(b[i].pressure, a[i].pressure) << "step " << i;  // bit for bit
+    EXPECT_EQ(b[i].result.products, a[i].result.products) << "step " << i;
+    EXPECT_TRUE(c[i].result.converged) << "step " << i;
+    products_a += a[i].result.products, products_c += c[i].result.products;
+    worst = std::max(worst, std::fabs(c[i].pressure - a[i].pressure) / std::max(1e-3, std::fabs(a[i].pressure)));
+  }
+  EXPECT_NE(products_c, products_a);  // the coarse space did act (its products are counted)
+  EXPECT_LE(worst, 1e-5);
+  RecordProperty("products_off", products_a);
+  RecordProperty("products_on", products_c);
+  RecordProperty("pressure_difference", std::to_string(worst));
+}
