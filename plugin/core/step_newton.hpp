@@ -189,6 +189,13 @@ struct StepState {
 
 namespace step_detail {
 
+// 0 .. n - 1: every point, as the increasing point lists of a product or a block take them.
+inline std::vector<Eigen::Index> all_points(Eigen::Index n) {
+  std::vector<Eigen::Index> points((std::size_t)n);
+  for (Eigen::Index i = 0; i < n; ++i) points[(std::size_t)i] = i;
+  return points;
+}
+
 // out += (scale m) x for a column-major sparse m, x given per column by x_of(j): Eigen's sparse *
 // dense product order (column by column from 0; a scale on the product scales the matrix's values,
 // and a scale of 1 changes no bit), through raw pointers (a store through a vector's operator[]
@@ -511,10 +518,7 @@ class StepSolver {
   Eigen::VectorXd force_derivative(const StepState& s, const Eigen::VectorXd& w,
                                    const std::vector<char>& upper) {
     const Eigen::Index n = w.size();
-    if (all_.size() != (std::size_t)n) {
-      all_.resize((std::size_t)n);
-      for (Eigen::Index i = 0; i < n; ++i) all_[(std::size_t)i] = i;
-    }
+    if (all_.size() != (std::size_t)n) all_ = step_detail::all_points(n);
     Eigen::VectorXd out(n);
     force_derivative_on(s, all_, all_, w.data(), upper, out.data());
     return out;
@@ -567,17 +571,14 @@ class StepSolver {
     work_.dT.resize(nodes);
     heat_solve(work_.heat, work_.dT);
     // T, alpha, c and the eigenstress change at rows.
-    if (interp_rows_.rows() != p_.interp.rows()) {  // row-major: T at a point, row by row
-      interp_rows_ = p_.interp;
-      interp_rows_.makeCompressed();
-    }
+    const RowMajorMatrix& interp_rows = interp_by_rows();
     work_.dalpha.resize(n);
     work_.dc.resize(n);
     work_.ds.resize(n);
     const double rhoa = p_.law.rho * p_.law.a, latent_slope = p_.law.rho * p_.law.latent / p_.law.T0;
-    const int* const row_outer = interp_rows_.outerIndexPtr();
-    const int* const row_inner = interp_rows_.innerIndexPtr();
-    const double* const row_value = interp_rows_.valuePtr();
+    const int* const row_outer = interp_rows.outerIndexPtr();
+    const int* const row_inner = interp_rows.innerIndexPtr();
+    const double* const row_value = interp_rows.valuePtr();
     const double* const dT = work_.dT.data();
     std::size_t a = 0;
     for (const Eigen::Index i : rows) {
@@ -1001,6 +1002,13 @@ class StepSolver {
     bool stable = false, saddle = false;
     bool pinned_by_curvature = false;  // the last round moved along a Ritz vector
     Eigen::VectorXd model = cl.force;
+    // The release rule: pinned point i sits at an end of its interval at the move's end, and the
+    // model force there points back inside.
+    auto points_back_inside = [&](Eigen::Index i) {
+      const double end = beta[i] + d[i];
+      const bool at_hi = std::fabs(end - cl.hi[i]) <= 1e-14, at_lo = std::fabs(end - cl.lo[i]) <= 1e-14;
+      return (at_hi && model[i] < 0) || (at_lo && model[i] > 0);
+    };
     CoarseSpace coarse;  // of this linearisation (built at its first hard round)
     for (int round = 0; round < rounds; ++round) {
       std::vector<Eigen::Index> sub;
@@ -1021,12 +1029,8 @@ class StepSolver {
         ++stats_.pinned_blocks;
         std::vector<char> next = pinned;
         int released = 0;
-        for (Eigen::Index i = 0; i < n; ++i) {
-          if (!cl.free[(std::size_t)i]) continue;
-          const double end = beta[i] + d[i];
-          const bool at_hi = std::fabs(end - cl.hi[i]) <= 1e-14, at_lo = std::fabs(end - cl.lo[i]) <= 1e-14;
-          if ((at_hi && model[i] < 0) || (at_lo && model[i] > 0)) next[(std::size_t)i] = 0, ++released;
-        }
+        for (Eigen::Index i = 0; i < n; ++i)
+          if (cl.free[(std::size_t)i] && points_back_inside(i)) next[(std::size_t)i] = 0, ++released;
         if (set.trace) std::fprintf(set.trace, "  round %d: every free point pinned, %d released\n", round, released);
         if (released == 0 || std::find(seen.begin(), seen.end(), next) != seen.end()) {
           stable = true;
@@ -1066,12 +1070,8 @@ class StepSolver {
       // Ritz vector mapped back by P. Stale images (a new linearisation) are recomputed first.
       const bool large = set.coarse && k >= set.coarse_points;
       if (large && coarse.empty() && (set.coarse_after <= 0 || hard_large_solve_)) {
-        if (interp_rows_.rows() != p_.interp.rows()) {
-          interp_rows_ = p_.interp;
-          interp_rows_.makeCompressed();
-        }
-        const Aggregates agg = aggregate_points(interp_rows_, p_.interp, sub, set.coarse_aggregate);
-        coarse = build_coarse(sub, coarse_vectors(interp_rows_, sub, agg, set.coarse_smooth), apply);
+        const Aggregates agg = aggregate_points(interp_by_rows(), p_.interp, sub, set.coarse_aggregate);
+        coarse = build_coarse(sub, coarse_vectors(interp_by_rows(), sub, agg, set.coarse_smooth), apply);
       }
       if (coarse.empty() && recycled_.stale && !recycled_.empty()) refresh(recycled_, sub, weight, apply);
       const DeflationPreconditioner pre =
@@ -1154,9 +1154,8 @@ class StepSolver {
         if (!pinned[(std::size_t)i]) {
           if (end > cl.hi[i]) next[(std::size_t)i] = 1, d[i] = cl.hi[i] - beta[i], changed = true;
           else if (end < cl.lo[i]) next[(std::size_t)i] = 1, d[i] = cl.lo[i] - beta[i], changed = true;
-        } else {
-          const bool at_hi = std::fabs(end - cl.hi[i]) <= 1e-14, at_lo = std::fabs(end - cl.lo[i]) <= 1e-14;
-          if ((at_hi && model[i] < 0) || (at_lo && model[i] > 0)) next[(std::size_t)i] = 0, changed = true;
+        } else if (points_back_inside(i)) {
+          next[(std::size_t)i] = 0, changed = true;
         }
       }
       if (!changed) break;
@@ -1372,13 +1371,22 @@ class StepSolver {
     Eigen::VectorXd rhs, points;                      // evaluate's heat load and T at the points
   };
 
+  // p_.interp by rows (T at a point, row by row), made at its first use in the step.
+  const RowMajorMatrix& interp_by_rows() {
+    if (interp_rows_.rows() != p_.interp.rows()) {
+      interp_rows_ = p_.interp;
+      interp_rows_.makeCompressed();
+    }
+    return interp_rows_;
+  }
+
   const StepProblem& p_;
   StepResult& stats_;
   RecycledSpace recycled_;  // over the step's linearised solves (newton_direction)
   // A solve of a block of StepSettings::coarse_points took coarse_after GMRES iterations this step.
   bool hard_large_solve_ = false;
   Workspace work_;
-  RowMajorMatrix interp_rows_;       // p_.interp by rows, made by the step's first product
+  RowMajorMatrix interp_rows_;       // p_.interp by rows (interp_by_rows), made at its first use
   std::vector<Eigen::Index> all_;    // 0 .. n-1 (force_derivative's support)
   std::vector<int> column_of_row_;   // contact row -> column of the Delassus factor's Y (-1: none)
 };

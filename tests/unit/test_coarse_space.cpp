@@ -44,18 +44,12 @@ struct Grid {
   }
 };
 
-std::vector<Eigen::Index> all(Eigen::Index n) {
-  std::vector<Eigen::Index> sub((std::size_t)n);
-  for (Eigen::Index i = 0; i < n; ++i) sub[(std::size_t)i] = i;
-  return sub;
-}
-
 // Every point in one aggregate; aggregates connected (through shared nodes), of size/2 to 2 size
 // points, about k / size of them.
 TEST(CoarseSpace, AggregatesAreConnectedAndSized) {
   const Grid g(30);
   const int size = 16, n = g.m * g.m;
-  const sma::Aggregates agg = sma::aggregate_points(g.rows, g.interp, all(n), size);
+  const sma::Aggregates agg = sma::aggregate_points(g.rows, g.interp, sma::step_detail::all_points(n), size);
   ASSERT_EQ((int)agg.of.size(), n);
   std::vector<std::vector<int>> members((std::size_t)agg.count);
   for (int p = 0; p < n; ++p) {
@@ -86,7 +80,7 @@ TEST(CoarseSpace, AggregatesAreConnectedAndSized) {
 TEST(CoarseSpace, PreconditionedSolveGivesTheSameSolutionInFewerProducts) {
   const Grid g(32);
   const int n = g.m * g.m;
-  const std::vector<Eigen::Index> sub = all(n);
+  const std::vector<Eigen::Index> sub = sma::step_detail::all_points(n);
   Eigen::VectorXd b(n);
   for (int p = 0; p < n; ++p) b[p] = std::cos(0.05 * p) + 0.3 * std::sin(0.7 * p);
   const double rtol = 1e-8;
@@ -117,7 +111,7 @@ TEST(CoarseSpace, PreconditionedSolveGivesTheSameSolutionInFewerProducts) {
 TEST(CoarseSpace, RestrictedPreconditionerIsPositive) {
   const Grid g(16);
   const int n = g.m * g.m;
-  const std::vector<Eigen::Index> sub = all(n);
+  const std::vector<Eigen::Index> sub = sma::step_detail::all_points(n);
   auto apply = [&](const Eigen::VectorXd& x) { return Eigen::VectorXd(g.a * x); };
   const sma::CoarseSpace space = sma::build_coarse(sub, sma::coarse_vectors(g.rows, sub, sma::aggregate_points(g.rows, g.interp, sub, 8), 3), apply);
   std::vector<Eigen::Index> fewer;

@@ -32,12 +32,6 @@ struct KnownOperator {
   }
 };
 
-std::vector<Eigen::Index> all(Eigen::Index n) {
-  std::vector<Eigen::Index> sub((std::size_t)n);
-  for (Eigen::Index i = 0; i < n; ++i) sub[(std::size_t)i] = i;
-  return sub;
-}
-
 // The harvested images are A times the harvested vectors (from the Arnoldi relation, no product).
 TEST(Deflation, HarvestedImagesAreTheOperatorsProducts) {
   const KnownOperator op(200, 10);
@@ -56,7 +50,7 @@ TEST(Deflation, HarvestedImagesAreTheOperatorsProducts) {
 TEST(Deflation, RecycledSpaceCutsTheProductsOfRepeatedSolves) {
   const int n = 400;
   const KnownOperator op(n, 20);
-  const std::vector<Eigen::Index> sub = all(n);
+  const std::vector<Eigen::Index> sub = sma::step_detail::all_points(n);
   sma::RecycledSpace space;
   space.capacity = 40;
   std::srand(11);
@@ -89,7 +83,7 @@ TEST(Deflation, RecycledSpaceCutsTheProductsOfRepeatedSolves) {
 TEST(Deflation, PreconditionedOperatorKeepsTheInstability) {
   const int n = 120;
   const KnownOperator op(n, 6, 0.05);
-  const std::vector<Eigen::Index> sub = all(n);
+  const std::vector<Eigen::Index> sub = sma::step_detail::all_points(n);
   sma::RecycledSpace space;
   space.capacity = 10;
   // The space: the exact eigenvectors of the 6 smallest |eigenvalues| (the unstable one included).
@@ -117,11 +111,11 @@ TEST(Deflation, InaccurateVectorsAreNotDeflated) {
   space.capacity = 4;
   const Eigen::VectorXd mixed = op.vectors.col(0) + 0.1 * op.vectors.col(50);
   sma::recycle(space, mixed, op.a * mixed, op.weight);
-  EXPECT_EQ(sma::deflation_on(space, all(n), op.weight).q.cols(), 0);
+  EXPECT_EQ(sma::deflation_on(space, sma::step_detail::all_points(n), op.weight).q.cols(), 0);
   sma::RecycledSpace exact;
   exact.capacity = 4;
   sma::recycle(exact, op.vectors.col(0), op.a * op.vectors.col(0), op.weight);
-  EXPECT_EQ(sma::deflation_on(exact, all(n), op.weight).q.cols(), 1);
+  EXPECT_EQ(sma::deflation_on(exact, sma::step_detail::all_points(n), op.weight).q.cols(), 1);
 }
 
 }  // namespace
