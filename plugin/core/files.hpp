@@ -524,6 +524,16 @@ inline std::string claim_locked(const fs::path& d, const std::string& dir, const
   for (const auto& path : doomed)
     if (auto e = busy_inside(path, pid); !e.empty()) return e;
   if (auto e = remove_entries(doomed); !e.empty()) return e;
+  // The suite's own temporaries that a killed run left (its unfinished manifest, the stale lock it
+  // was moving aside), fresh or resumed alike: their process no longer runs.
+  for (const std::string& prefix : {std::string(results_marker) + ".partial-", std::string(results_lock) + ".stale-"})
+    for (fs::directory_iterator it(d, ec), end; !ec && it != end; it.increment(ec)) {
+      const std::string name = it->path().filename().string();
+      if (with_pid(name, prefix)) {
+        const long owner = std::atol(name.c_str() + prefix.size());
+        if (owner != pid && !process_alive(owner)) fs::remove(it->path(), ec);
+      }
+    }
   if (!resume)
     if (auto e = write_manifest(d, scene, pid); !e.empty()) return e;
   return {};

@@ -230,8 +230,16 @@ TEST(Files, ALiveRunsLockIsRespectedADeadRunsIsTaken) {
   // The child ends: its lock is stale and the next run takes it.
   close(fds[1]);
   waitpid(child, nullptr, 0);
+  // Killed while claiming, it had left its unfinished manifest and a lock it was moving aside:
+  // the next claim removes a dead process's temporaries.
+  const std::string manifest_left = d + "/" + files::results_marker + ".partial-" + std::to_string(child),
+                    lock_left = d + "/" + files::results_lock + ".stale-" + std::to_string(child);
+  touch(manifest_left);
+  touch(lock_left);
   EXPECT_EQ(files::claim_results(d, "beam", getpid()), "");
   EXPECT_EQ(files::lock_owner(fs::path(d) / files::results_lock), (long)getpid());
+  EXPECT_FALSE(fs::exists(manifest_left));
+  EXPECT_FALSE(fs::exists(lock_left));
 }
 
 TEST(Files, EndsWithTellsACompleteVtuFromACutOne) {
