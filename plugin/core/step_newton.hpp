@@ -1143,7 +1143,12 @@ class StepSolver {
       pinned_by_curvature = false;
       stable = true;
       for (Eigen::Index a = 0; a < k; ++a) d[sub[(std::size_t)a]] += g.x[a];
-      model = cl.force + force_derivative(s, d, cl.upper);
+      // The model force at the move's end is read only by the release rule, on pinned points:
+      // without any (every first round) it is not formed, and a round that pins points forms it
+      // again at the pinned move below (one product fewer per Newton iteration, the same moves).
+      bool any_pinned = false;
+      for (Eigen::Index i = 0; i < n && !any_pinned; ++i) any_pinned = cl.free[(std::size_t)i] && pinned[(std::size_t)i];
+      if (any_pinned) model = cl.force + force_derivative(s, d, cl.upper);
       // Pin the free points whose move leaves their interval; release pinned points whose model
       // force at the move's end points back inside.
       std::vector<char> next = pinned;
