@@ -632,6 +632,14 @@ class StepSolver {
     double mark = s.residual_norm;
     int marked = 0;
     int rounds = set.pdas_rounds;  // raised for the rest of the step once a curvature move stalls
+    // The region grows after a good full-size move and shrinks after a poor one.
+    auto update_radius = [&](double ratio, double size) {
+      if (ratio > 0.75 && size >= 0.99 * radius) radius = std::min(1.0, 2 * radius);
+      else if (ratio < 0.25) radius = std::max(1e-12, 0.25 * size);
+    };
+    Eigen::VectorXd pending_step;  // a solving move's, whose ratio waits (Search::ratio_pending_step)
+    double pending_change = 0;
+    Classified pending_region;
     bool dense_tried = false;      // dense_newton, at most once a step
     while (s.residual_norm > set.tol && stats_.iterations < set.maxit) {
       const int stall = p_.dissipation > 0 ? set.stall_dissipative : set.stall;
@@ -663,6 +671,7 @@ class StepSolver {
       }
       Eigen::VectorXd d;
       const double before = s.residual_norm;
+      double size = 0;  // the trust-region move's length (max norm)
       Move tried = newton_direction(s, beta, region, set, d, set.saddle_newton, rounds);
       Search found;
       if (tried == SaddleNewton) {
@@ -681,9 +690,14 @@ class StepSolver {
         // of the model's prediction (or the step is solved, or a Newton move halves the best
         // residual); the region grows after a good full-size move and shrinks after a poor one.
         found = try_move(s, beta, region, d, set.tol, best, tried == Newton, true);
-        const double size = d.lpNorm<Eigen::Infinity>();
-        if (found.ratio > 0.75 && size >= 0.99 * radius) radius = std::min(1.0, 2 * radius);
-        else if (found.ratio < 0.25) radius = std::max(1e-12, 0.25 * size);
+        size = d.lpNorm<Eigen::Infinity>();
+        if (found.ratio_pending_step.size()) {
+          pending_step = std::move(found.ratio_pending_step);
+          pending_change = found.change;
+          pending_region = region;
+        } else {
+          update_radius(found.ratio, size);
+        }
         if (!found.ok && tried == Newton && radius > 1e-9) continue;  // a smaller region, the same point
       }
       if (!found.ok || tried == NegativeCurvature) {
@@ -698,8 +712,15 @@ class StepSolver {
         stats_.failure = "neither the trust-region move nor the gradient step lowers the step's energy";
         break;
       }
+      StepState previous;
+      if (pending_step.size()) previous = std::move(s);
       s = std::move(found.state);
       switch_variants(s);
+      if (pending_step.size()) {
+        // The move solved the step but a variant switch raised its residual: the region's update.
+        if (s.residual_norm > set.tol) update_radius(model_ratio(previous, pending_region, pending_step, pending_change), size);
+        pending_step.resize(0);
+      }
       if (tried == NegativeCurvature && !(s.residual_norm <= 0.5 * before)) rounds = std::max(rounds, set.pdas_rounds_stalled);
       best = std::min(best, s.residual_norm);
       if (s.residual_norm <= 0.5 * mark) mark = s.residual_norm, marked = stats_.iterations;
@@ -1290,7 +1311,20 @@ class StepSolver {
     bool ok = false;
     double ratio = 0;  // W's change over the quadratic model's (try_move)
     StepState state;
+    // A move that solves the step (try_move): its ratio is formed only if the step goes on (a
+    // variant switch raising the residual), from its step and W's change (model_ratio).
+    Eigen::VectorXd ratio_pending_step;
+    double change = 0;
   };
+  // W's change over its quadratic model's prediction -sum area (f step + step (df/dbeta) step / 2)
+  // for a move `step` from s (one product).
+  double model_ratio(const StepState& s, const Classified& region, const Eigen::VectorXd& step, double change) {
+    const Eigen::VectorXd curvature = force_derivative(s, step, region.upper);
+    double model = 0;
+    for (Eigen::Index i = 0; i < step.size(); ++i)
+      model -= p_.area[i] * (region.force[i] * step[i] + 0.5 * step[i] * curvature[i]);
+    return model < 0 ? change / model : (change < 0 ? 1.0 : 0.0);
+  }
   // The signed fractions of magnitudes `moved` with the variants of s.
   static Eigen::VectorXd signed_fractions(const StepState& s, const Eigen::VectorXd& moved) {
     Eigen::VectorXd chi(moved.size());
@@ -1326,15 +1360,20 @@ class StepSolver {
       if (region.free[(std::size_t)i]) moved[i] = std::clamp(beta[i] + d[i], region.lo[i], region.hi[i]);
     const Eigen::VectorXd step = moved - beta;
     if (step.lpNorm<Eigen::Infinity>() == 0) return out;
-    const Eigen::VectorXd curvature = force_derivative(s, step, region.upper);
-    double model = 0;
-    for (Eigen::Index i = 0; i < n; ++i)
-      model -= p_.area[i] * (region.force[i] * step[i] + 0.5 * step[i] * curvature[i]);
     StepState t = evaluate(signed_fractions(s, moved), s.r, s.threshold);
     double predicted = 0;
     const double change = energy_change(s, beta, t, moved, predicted);
-    out.ratio = model < 0 ? change / model : (change < 0 ? 1.0 : 0.0);
-    if ((by_energy && out.ratio >= 0.1 && change < 0) || t.residual_norm <= tol || (newton && t.residual_norm <= 0.5 * best)) {
+    // The ratio (a product: the model's curvature) is read by the energy's acceptance test and
+    // the trust region's update only: not formed for a move judged by the residual alone, nor,
+    // until the step goes on, for one that solves it.
+    if (t.residual_norm <= tol) {
+      out.ok = true;
+      if (by_energy) out.ratio_pending_step = step, out.change = change;
+      out.state = std::move(t);
+      return out;
+    }
+    if (by_energy) out.ratio = model_ratio(s, region, step, change);
+    if ((by_energy && out.ratio >= 0.1 && change < 0) || (newton && t.residual_norm <= 0.5 * best)) {
       out.ok = true;
       out.state = std::move(t);
     }
