@@ -632,14 +632,6 @@ class StepSolver {
     double mark = s.residual_norm;
     int marked = 0;
     int rounds = set.pdas_rounds;  // raised for the rest of the step once a curvature move stalls
-    // The region grows after a good full-size move and shrinks after a poor one.
-    auto update_radius = [&](double ratio, double size) {
-      if (ratio > 0.75 && size >= 0.99 * radius) radius = std::min(1.0, 2 * radius);
-      else if (ratio < 0.25) radius = std::max(1e-12, 0.25 * size);
-    };
-    Eigen::VectorXd pending_step;  // a solving move's, whose ratio waits (Search::ratio_pending_step)
-    double pending_change = 0;
-    Classified pending_region;
     bool dense_tried = false;      // dense_newton, at most once a step
     while (s.residual_norm > set.tol && stats_.iterations < set.maxit) {
       const int stall = p_.dissipation > 0 ? set.stall_dissipative : set.stall;
@@ -671,7 +663,6 @@ class StepSolver {
       }
       Eigen::VectorXd d;
       const double before = s.residual_norm;
-      double size = 0;  // the trust-region move's length (max norm)
       Move tried = newton_direction(s, beta, region, set, d, set.saddle_newton, rounds);
       Search found;
       if (tried == SaddleNewton) {
@@ -690,14 +681,9 @@ class StepSolver {
         // of the model's prediction (or the step is solved, or a Newton move halves the best
         // residual); the region grows after a good full-size move and shrinks after a poor one.
         found = try_move(s, beta, region, d, set.tol, best, tried == Newton, true);
-        size = d.lpNorm<Eigen::Infinity>();
-        if (found.ratio_pending_step.size()) {
-          pending_step = std::move(found.ratio_pending_step);
-          pending_change = found.change;
-          pending_region = region;
-        } else {
-          update_radius(found.ratio, size);
-        }
+        const double size = d.lpNorm<Eigen::Infinity>();
+        if (found.ratio > 0.75 && size >= 0.99 * radius) radius = std::min(1.0, 2 * radius);
+        else if (found.ratio < 0.25) radius = std::max(1e-12, 0.25 * size);
         if (!found.ok && tried == Newton && radius > 1e-9) continue;  // a smaller region, the same point
       }
       if (!found.ok || tried == NegativeCurvature) {
@@ -712,15 +698,8 @@ class StepSolver {
         stats_.failure = "neither the trust-region move nor the gradient step lowers the step's energy";
         break;
       }
-      StepState previous;
-      if (pending_step.size()) previous = std::move(s);
       s = std::move(found.state);
       switch_variants(s);
-      if (pending_step.size()) {
-        // The move solved the step but a variant switch raised its residual: the region's update.
-        if (s.residual_norm > set.tol) update_radius(model_ratio(previous, pending_region, pending_step, pending_change), size);
-        pending_step.resize(0);
-      }
       if (tried == NegativeCurvature && !(s.residual_norm <= 0.5 * before)) rounds = std::max(rounds, set.pdas_rounds_stalled);
       best = std::min(best, s.residual_norm);
       if (s.residual_norm <= 0.5 * mark) mark = s.residual_norm, marked = stats_.iterations;
@@ -1311,10 +1290,6 @@ class StepSolver {
     bool ok = false;
     double ratio = 0;  // W's change over the quadratic model's (try_move)
     StepState state;
-    // A move that solves the step (try_move): its ratio is formed only if the step goes on (a
-    // variant switch raising the residual), from its step and W's change (model_ratio).
-    Eigen::VectorXd ratio_pending_step;
-    double change = 0;
   };
   // W's change over its quadratic model's prediction -sum area (f step + step (df/dbeta) step / 2)
   // for a move `step` from s (one product).
@@ -1364,11 +1339,13 @@ class StepSolver {
     double predicted = 0;
     const double change = energy_change(s, beta, t, moved, predicted);
     // The ratio (a product: the model's curvature) is read by the energy's acceptance test and
-    // the trust region's update only: not formed for a move judged by the residual alone, nor,
-    // until the step goes on, for one that solves it.
+    // the trust region's update only: not formed for a move judged by the residual alone, nor
+    // for one that solves the step, which leaves the region as it is (the step ends there,
+    // unless a variant switch raises its residual: the next move then starts from that region;
+    // in none of the sleeve defaults).
     if (t.residual_norm <= tol) {
       out.ok = true;
-      if (by_energy) out.ratio_pending_step = step, out.change = change;
+      out.ratio = std::numeric_limits<double>::quiet_NaN();  // neither > 0.75 nor < 0.25: no update
       out.state = std::move(t);
       return out;
     }
