@@ -10,8 +10,10 @@
 // the rest is element by element, in the script's arithmetic.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "material.hpp"
@@ -65,6 +67,38 @@ inline void area_fractions(span<const double> chi, span<const double> area, doub
   fractions[1] = 0.5 * m1 / total;
   fractions[2] = 0.5 * m2 / total;
   fractions[0] = 1. - latent / total;
+}
+
+// The phase labels of signed martensite fractions chi for the output fields (edp/solvers/dct.idp
+// PhaseLabelsOfChi): 1 martensite 1 (chi > 0), 2 martensite 2 (chi < 0), 0 austenite (chi = 0, and
+// a NaN, as the script's chi > 0 ? 1 : (chi < 0 ? 2 : 0) gave), one per point.
+inline void phase_labels(span<const double> chi, span<double> labels) {
+  if (labels.size() != chi.size()) throw std::invalid_argument("phase_labels: one label per point");
+  for (std::size_t i = 0; i < chi.size(); ++i) labels[i] = chi[i] > 0 ? 1. : (chi[i] < 0 ? 2. : 0.);
+}
+
+// The step solver's data array (plugin/sma.cpp StepSolveFraction, n points, `nodes` heat nodes,
+// `dofs` displacement dofs): [area | kappa | threshold offset | chi at the step's start | b at the
+// step's start | heat right side | heat free mask | force | free dofs], segments of n, n, n, n, n,
+// nodes, nodes, dofs, dofs values. Writes the five a step changes (chi, b, the heat right side, its
+// mask, the force: copies, bit for bit); the others stay as the run's first step set them.
+inline void set_step_data(span<double> data, span<const double> chi, span<const double> b,
+                          span<const double> heat_rhs, span<const double> heat_mask, span<const double> force) {
+  const std::size_t n = chi.size(), nodes = heat_rhs.size(), dofs = force.size();
+  if (b.size() != n || heat_mask.size() != nodes || data.size() != 5 * n + 2 * nodes + 2 * dofs)
+    throw std::invalid_argument("set_step_data: the data array holds " + std::to_string(data.size()) +
+                                " values, not 5 x " + std::to_string(n) + " points + 2 x " +
+                                std::to_string(nodes) + " heat nodes + 2 x " + std::to_string(dofs) +
+                                " dofs, or b and the heat mask are not of the points' and nodes' sizes");
+  double* out = data.begin();
+  auto put = [&out](span<const double> segment, std::size_t at) {
+    std::copy(segment.begin(), segment.end(), out + at);
+  };
+  put(chi, 3 * n);
+  put(b, 4 * n);
+  put(heat_rhs, 5 * n);
+  put(heat_mask, 5 * n + nodes);
+  put(force, 5 * n + 2 * nodes);
 }
 
 }  // namespace sma
