@@ -21,6 +21,15 @@
 
 namespace sma {
 
+// Whether the law's alpha is finite and >= 0 (not -0) at any interpolation (weights at most 1 in
+// size, as a P1 -> P0 one's) of these nodal temperatures: rho a > 0 and every |T|, |Tc| and rho a
+// at most 1e100, so that rho a (Tc - T) cannot overflow (a NaN temperature: no).
+inline bool alpha_finite_at(const ThermalLaw& law, span<const double> temperature) {
+  const double bound = 1e100, rho_a = law.rho * law.a;
+  if (!(rho_a > 0 && rho_a <= bound && std::abs(law.Tc) <= bound)) return false;
+  return std::all_of(temperature.begin(), temperature.end(), [bound](double t) { return std::abs(t) <= bound; });
+}
+
 // apply_latent(x, y): y = Q x (nodes from points); apply_interp(x, y): y = Interp x (points from
 // nodes). latent_rate = rho L / dt. chi, b_start, stress: one value per point; temperature, load:
 // one per heat node.
@@ -34,7 +43,7 @@ void fraction_step_record(const ThermalLaw& law, double latent_rate, span<const 
     throw std::invalid_argument("fraction_step_record: chi, b_start and stress need one value per point");
   if (load.size() != temperature.size())
     throw std::invalid_argument("fraction_step_record: load and temperature need one value per heat node");
-  std::vector<double> change(n), at_points(n);
+  std::vector<double> change(n);
   for (std::size_t i = 0; i < n; ++i) {
     const double b = std::abs(chi[i]);
     change[i] = (b - b_start[i]) * latent_rate;  // dchi = b - bStart; dchi *= rho L / dt
@@ -46,6 +55,16 @@ void fraction_step_record(const ThermalLaw& law, double latent_rate, span<const 
     apply_latent(change.data(), load.begin());
   else
     std::fill(load.begin(), load.end(), 0.0);
+  // (every chi zero, the whole tail of a run again: s = alpha chi is chi itself, a zero of chi's
+  // sign, wherever alpha is finite and not negative. The law's alpha, rho a (Tc - T) below Tc and
+  // +0 above, is so at every point when rho a > 0 and the nodes' temperatures are finite and
+  // bounded, an interpolation's weights being at most 1 in size: then no interpolation.)
+  if (std::all_of(chi.begin(), chi.end(), [](double x) { return x == 0.0; }) &&
+      alpha_finite_at(law, temperature)) {
+    std::copy(chi.begin(), chi.end(), stress.begin());
+    return;
+  }
+  std::vector<double> at_points(n);
   apply_interp(temperature.begin(), at_points.data());
   for (std::size_t i = 0; i < n; ++i) stress[i] = law.alpha(at_points[i]) * chi[i];
 }

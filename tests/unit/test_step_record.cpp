@@ -132,3 +132,49 @@ TEST(StepRecord, StepDataSegmentsAtTheSolversLayout) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(StepRecord, AllAusteniteStressIsChiWithoutTheInterpolation) {
+  // Every chi zero (of either sign): s = alpha(Interp T) chi is a zero of chi's sign, alpha >= 0
+  // finite; the record skips the interpolation then, and only then, with the same bits.
+  const Dense Q{{0.5, 0.25, 0.0, 0.5, 0.75, 1.0}, 2, 3};
+  const Dense interp{{1.0, 0.0, 0.5, 0.5, 0.0, 1.0}, 3, 2};
+  const std::vector<double> chi = {0.0, -0.0, 0.0};
+  auto run = [&](const sma::ThermalLaw& lawUsed, std::vector<double> T, int& calls) {
+    std::vector<double> b = {0.0, 0.0, 0.0}, load(2, 7.0), s(3, 7.0);
+    calls = 0;
+    auto counted = [&](const double* x, double* y) { ++calls; interp(x, y); };
+    sma::fraction_step_record(lawUsed, 1.0, sma::span<const double>(chi.data(), 3), sma::span<double>(b),
+                              sma::span<const double>(T.data(), 2), Q, counted, sma::span<double>(load),
+                              sma::span<double>(s));
+    EXPECT_EQ(load, (std::vector<double>{0.0, 0.0}));
+    return s;
+  };
+  // T below Tc at one node, above at the other: alpha > 0 and alpha = 0 at the points
+  for (const std::vector<double>& T : {std::vector<double>{250.0, 320.0}, std::vector<double>{300.0, 300.0}}) {
+    int calls = -1;
+    const std::vector<double> s = run(law, T, calls);
+    EXPECT_EQ(calls, 0);
+    for (int i = 0; i < 3; ++i) {
+      const double Tq = interp.a[2 * i] * T[0] + interp.a[2 * i + 1] * T[1];
+      const double expected = law.alpha(Tq) * chi[i];  // the interpolated path's formula
+      EXPECT_EQ(s[i], expected) << i;
+      EXPECT_EQ(std::signbit(s[i]), std::signbit(expected)) << i;
+    }
+  }
+  // Not skipped: a NaN or an unbounded temperature, a law with a = 0 (alpha = +0 or -0 times a zero)
+  int calls = -1;
+  run(law, {std::nan(""), 250.0}, calls);
+  EXPECT_EQ(calls, 1);
+  run(law, {1e300, 250.0}, calls);
+  EXPECT_EQ(calls, 1);
+  const sma::ThermalLaw noA{6500, 0.0, 12000, 237, 300};
+  run(noA, {250.0, 320.0}, calls);
+  EXPECT_EQ(calls, 1);
+  // (the first test's chi has points not austenite: its interpolation ran)
+  EXPECT_FALSE(sma::alpha_finite_at(noA, std::vector<double>{250.0}));
+  EXPECT_TRUE(sma::alpha_finite_at(law, std::vector<double>{250.0, -1e100}));
+}
+
+}  // namespace
