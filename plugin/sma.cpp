@@ -112,6 +112,11 @@
 //   long AreaFractions(real[] chi, real[] area, real[] fractions)   fractions = the area fractions
 //       [austenite, martensite 1, martensite 2] of signed martensite fractions chi (resized to 3;
 //       plugin/core/step_record.hpp, as the script's FractionsOfChi computed them)
+//   long PhaseLabels(real[] chi, real[] labels)   labels = 1 where chi > 0, 2 where chi < 0, else 0
+//       (resized to chi's size; dct.idp PhaseLabelsOfChi, step_record.hpp phase_labels)
+//   long StepDataSet(real[] data, real[] chi, real[] b, real[] heatRhs, real[] heatMask, real[] force)
+//       writes a step's five changing segments of StepSolveFraction's data array (step_record.hpp
+//       set_step_data: the layout), copies bit for bit; returns the number of points
 //   long HeatOperatorsSet(long handle, matrix Kt, real[] capacity, real[] exchangeLength,
 //                         real[] imposedMask, real[] freeMask, real[] TI)   a slot (handle < 0: a
 //       new one) keeping the heat problem's arrays (edp/solvers/heat.idp's variables: pointers, read
@@ -782,7 +787,7 @@ long RoundToFloat(KN<double>* const& x) {
   return changed;
 }
 
-double SmaPluginVersion() { return 17.0; }
+double SmaPluginVersion() { return 18.0; }
 
 // FreeFEM's time() has a resolution of one second and clock() counts CPU time; timings of the
 // scenes are wall-clock seconds from a monotonic clock.
@@ -995,6 +1000,22 @@ long AreaFractions(KN<double>* const& chi, KN<double>* const& area, KN<double>* 
   });
 }
 
+long PhaseLabels(KN<double>* const& chi, KN<double>* const& labels) {
+  return guarded("PhaseLabels", [&] {
+    if (labels->N() != chi->N()) labels->resize(chi->N());
+    sma::phase_labels(cview(chi), view(labels));
+    return (long)chi->N();
+  });
+}
+
+long StepDataSet(KN<double>* const& data, KN<double>* const& chi, KN<double>* const& b, KN<double>* const& heatRhs,
+                 KN<double>* const& heatMask, KN<double>* const& force) {
+  return guarded("StepDataSet", [&] {
+    sma::set_step_data(view(data), cview(chi), cview(b), cview(heatRhs), cview(heatMask), cview(force));
+    return (long)chi->N();
+  });
+}
+
 long ContactHeatExchange(KNM<double>* const& table, KN<double>* const& r, long const& m, double const& gContact,
                          double const& gPipe, double const& Tpipe, KN<double>* const& g, KN<double>* const& Text) {
   return guarded("ContactHeatExchange", [&] {
@@ -1118,6 +1139,8 @@ static void Load_Init() {
   Global.Add("ContactRecordPeaks", "(", new OneOperator4_<long, A, A, KN<long>*, long>(ContactRecordPeaks));
   Global.Add("ContactRecordSlip", "(", new OneOperator5_<long, A, A, double, KN<long>*, long>(ContactRecordSlip));
   Global.Add("AreaFractions", "(", new OneOperator3_<long, A, A, A>(AreaFractions));
+  Global.Add("PhaseLabels", "(", new OneOperator2_<long, A, A>(PhaseLabels));
+  Global.Add("StepDataSet", "(", new OneOperator6_<long, A, A, A, A, A, A>(StepDataSet));
   Global.Add("ContactHeatExchange", "(",
              new OneOperator8_<long, KNM<double>*, A, long, double, double, double, A, A>(ContactHeatExchange));
   Global.Add("CsvWriteRow", "(", new OneOperator2_<long, std::ostream*, A>(CsvWriteRow));

@@ -92,3 +92,89 @@ TEST(StepRecord, AreaFractionsOfSignedFractions) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(StepRecord, PhaseLabelsAreTheSignOfChi) {
+  // a partly transformed point carries its martensite's label; a signed zero and a NaN are austenite
+  std::vector<double> chi = {0.0, -0.0, 1e-300, -1e-300, 0.5, -1.0, std::nan("")}, labels(7, -1.0);
+  sma::phase_labels(sma::span<const double>(chi.data(), 7), sma::span<double>(labels));
+  EXPECT_EQ(labels, (std::vector<double>{0, 0, 1, 2, 1, 2, 0}));
+  std::vector<double> shortLabels(6);
+  EXPECT_THROW(sma::phase_labels(sma::span<const double>(chi.data(), 7), sma::span<double>(shortLabels)),
+               std::invalid_argument);
+}
+
+TEST(StepRecord, StepDataSegmentsAtTheSolversLayout) {
+  // 2 points, 3 heat nodes, 4 dofs: data = [area | kappa | offset | chi | b | rhs | mask | force | free];
+  // the five a step changes are written at their offsets, the run's four kept, bit for bit.
+  const std::size_t n = 2, nodes = 3, dofs = 4, size = 5 * n + 2 * nodes + 2 * dofs;
+  std::vector<double> data(size);
+  for (std::size_t i = 0; i < size; ++i) data[i] = -1.0 - double(i);  // the run's values, to be kept
+  std::vector<double> chi = {0.25, -0.0}, b = {0.5, 1.0 / 3.0}, rhs = {1e300, -2.5, 3.0}, mask = {1, 0, 1},
+                      force = {0.1, 0.2, 0.3, 0.4};
+  std::vector<double> expected = data;
+  std::copy(chi.begin(), chi.end(), expected.begin() + 3 * n);
+  std::copy(b.begin(), b.end(), expected.begin() + 4 * n);
+  std::copy(rhs.begin(), rhs.end(), expected.begin() + 5 * n);
+  std::copy(mask.begin(), mask.end(), expected.begin() + 5 * n + nodes);
+  std::copy(force.begin(), force.end(), expected.begin() + 5 * n + 2 * nodes);
+  sma::set_step_data(sma::span<double>(data), chi, b, rhs, mask, force);
+  for (std::size_t i = 0; i < size; ++i) EXPECT_EQ(data[i], expected[i]) << "at " << i;
+  EXPECT_TRUE(std::signbit(data[3 * n + 1]));  // -0 stays -0 (a copy, not arithmetic)
+  // the area, kappa, offset and free segments untouched
+  for (std::size_t i = 0; i < 3 * n; ++i) EXPECT_EQ(data[i], -1.0 - double(i));
+  for (std::size_t i = 5 * n + 2 * nodes + dofs; i < size; ++i) EXPECT_EQ(data[i], -1.0 - double(i));
+  // a data array of another layout, or b not one value per point: refused
+  std::vector<double> shortData(size - 1), shortB = {0.5};
+  EXPECT_THROW(sma::set_step_data(sma::span<double>(shortData), chi, b, rhs, mask, force), std::invalid_argument);
+  EXPECT_THROW(sma::set_step_data(sma::span<double>(data), chi, shortB, rhs, mask, force), std::invalid_argument);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(StepRecord, AllAusteniteStressIsChiWithoutTheInterpolation) {
+  // Every chi zero (of either sign): s = alpha(Interp T) chi is a zero of chi's sign, alpha >= 0
+  // finite; the record skips the interpolation then, and only then, with the same bits.
+  const Dense Q{{0.5, 0.25, 0.0, 0.5, 0.75, 1.0}, 2, 3};
+  const Dense interp{{1.0, 0.0, 0.5, 0.5, 0.0, 1.0}, 3, 2};
+  const std::vector<double> chi = {0.0, -0.0, 0.0};
+  auto run = [&](const sma::ThermalLaw& lawUsed, std::vector<double> T, int& calls) {
+    std::vector<double> b = {0.0, 0.0, 0.0}, load(2, 7.0), s(3, 7.0);
+    calls = 0;
+    auto counted = [&](const double* x, double* y) { ++calls; interp(x, y); };
+    sma::fraction_step_record(lawUsed, 1.0, sma::span<const double>(chi.data(), 3), sma::span<double>(b),
+                              sma::span<const double>(T.data(), 2), Q, counted, sma::span<double>(load),
+                              sma::span<double>(s));
+    EXPECT_EQ(load, (std::vector<double>{0.0, 0.0}));
+    return s;
+  };
+  // T below Tc at one node, above at the other: alpha > 0 and alpha = 0 at the points
+  for (const std::vector<double>& T : {std::vector<double>{250.0, 320.0}, std::vector<double>{300.0, 300.0}}) {
+    int calls = -1;
+    const std::vector<double> s = run(law, T, calls);
+    EXPECT_EQ(calls, 0);
+    for (int i = 0; i < 3; ++i) {
+      const double Tq = interp.a[2 * i] * T[0] + interp.a[2 * i + 1] * T[1];
+      const double expected = law.alpha(Tq) * chi[i];  // the interpolated path's formula
+      EXPECT_EQ(s[i], expected) << i;
+      EXPECT_EQ(std::signbit(s[i]), std::signbit(expected)) << i;
+    }
+  }
+  // Not skipped: a NaN or an unbounded temperature, a law with a = 0 (alpha = +0 or -0 times a zero)
+  int calls = -1;
+  run(law, {std::nan(""), 250.0}, calls);
+  EXPECT_EQ(calls, 1);
+  run(law, {1e300, 250.0}, calls);
+  EXPECT_EQ(calls, 1);
+  const sma::ThermalLaw noA{6500, 0.0, 12000, 237, 300};
+  run(noA, {250.0, 320.0}, calls);
+  EXPECT_EQ(calls, 1);
+  // (the first test's chi has points not austenite: its interpolation ran)
+  EXPECT_FALSE(sma::alpha_finite_at(noA, std::vector<double>{250.0}));
+  EXPECT_TRUE(sma::alpha_finite_at(law, std::vector<double>{250.0, -1e100}));
+}
+
+}  // namespace
