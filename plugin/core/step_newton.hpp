@@ -440,8 +440,12 @@ class StepSolver {
     Eigen::VectorXd& rhs = work_.rhs;
     const Eigen::Index nodes = p_.heat_rhs.size(), dofs = p_.force.size();
     rhs.setZero(nodes);
-    step_detail::add_scaled_columns(p_.latent, p_.latent_scale,
-                                    [&](Eigen::Index i) { return std::fabs(chi[i]) - p_.b_start[i]; }, rhs.data());
+    // No fraction anywhere (the tail of a run, every point austenite): the latent and eigenstress
+    // loads are sums of exact zeros, which add_scaled_columns would skip column by column.
+    const bool transformed = (chi.array() != 0.0).any();
+    if (transformed || (p_.b_start.array() != 0.0).any())
+      step_detail::add_scaled_columns(p_.latent, p_.latent_scale,
+                                      [&](Eigen::Index i) { return std::fabs(chi[i]) - p_.b_start[i]; }, rhs.data());
     for (Eigen::Index j = 0; j < nodes; ++j) rhs[j] = p_.heat_rhs[j] + p_.heat_mask[j] * rhs[j];
     if (p_.dissipation > 0) {  // the dissipated heat k |chi - chi_start| / dt, a source beside the latent heat
       Eigen::VectorXd& source = work_.heat;
@@ -467,7 +471,8 @@ class StepSolver {
     // Mechanics with contact: (f + B (alpha chi)) .* free.
     Eigen::VectorXd& mech = work_.mech;
     mech.setZero(dofs);
-    step_detail::add_scaled_columns(p_.load, 1.0, [&](Eigen::Index i) { return s.alpha[i] * chi[i]; }, mech.data());
+    if (transformed)
+      step_detail::add_scaled_columns(p_.load, 1.0, [&](Eigen::Index i) { return s.alpha[i] * chi[i]; }, mech.data());
     for (Eigen::Index j = 0; j < dofs; ++j) mech[j] = (p_.force[j] + mech[j]) * p_.free[j];
     s.r = r0;
     s.threshold = threshold0;
