@@ -927,7 +927,10 @@ long VtuWrite(string* const& path, pmesh const& Th, string* const& vectorName, K
     }
     pointFields.push_back({*vectorName, 2, std::vector<double>(&(*vector)[0], &(*vector)[0] + 2 * nv)});
     pointFields.push_back({*scalarName, 1, std::vector<double>(&(*scalar)[0], &(*scalar)[0] + nv)});
-    const std::string text = sma::output::vtu_file(m, cellFields, pointFields);
+    // The mesh's part once a run (and again when the mesh changes): the frames share it.
+    static sma::output::VtuMeshText meshText;
+    std::string text = meshText.of(m);
+    sma::output::vtu_fields_part(m, cellFields, pointFields, text);
     std::FILE* file = std::fopen(path->c_str(), "wb");
     if (!file) return -1L;
     const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size();
@@ -947,18 +950,23 @@ long PlaneStressAtCentroids(pmesh const& Th, Matrice_Creuse<double>* const& Dx, 
     const long nv = mesh.nv, nt = mesh.nt;
     if (u->N() != 2 * nv) throw std::invalid_argument("u needs 2 values per vertex");
     if (lame->N() != 2) throw std::invalid_argument("lame must be [lambda, mu]");
-    const sma::SparseMatrix dx = ToEigen(Dx), dy = ToEigen(Dy);
-    if (dx.rows() != nt || dx.cols() != nv || dy.rows() != nt || dy.cols() != nv)
-      throw std::invalid_argument("Dx and Dy must be triangles x vertices (interpolate(Ph, Wh, op = 1), op = 2)");
     std::vector<int> triangles(3 * nt);
-    std::vector<double> gx(3 * nt), gy(3 * nt);
     for (long t = 0; t < nt; ++t)
-      for (int k = 0; k < 3; ++k) {
-        const int v = mesh(t, k);
-        triangles[3 * t + k] = v;
-        gx[3 * t + k] = dx.coeff(t, v);
-        gy[3 * t + k] = dy.coeff(t, v);
-      }
+      for (int k = 0; k < 3; ++k) triangles[3 * t + k] = mesh(t, k);
+    // the matrices' entries read in place (not converted to Eigen's matrices at every frame)
+    auto gradients = [&](Matrice_Creuse<double>* D) {
+      HashMatrix<int, double>* A = D->pHM();
+      if (!A || A->n != nt || A->m != nv || A->half)
+        throw std::invalid_argument("Dx and Dy must be triangles x vertices (interpolate(Ph, Wh, op = 1), op = 2)");
+      const int shift = A->fortran ? 1 : 0;
+      if (A->i) return sma::output::centroid_gradients(triangles, A->i, A->j, A->aij, A->nnz, shift);
+      if (!A->p) throw std::invalid_argument("the matrix has neither triplets nor row pointers");
+      std::vector<int> rows(A->nnz);
+      for (int r = 0; r < A->n; ++r)
+        for (int k = A->p[r] - shift; k < A->p[r + 1] - shift; ++k) rows[k] = r + shift;
+      return sma::output::centroid_gradients(triangles, rows.data(), A->j, A->aij, A->nnz, shift);
+    };
+    const std::vector<double> gx = gradients(Dx), gy = gradients(Dy);
     sxx->resize(nt); syy->resize(nt); sxy->resize(nt);
     sma::output::plane_stress_p1(triangles, gx, gy, &(*u)[0], (*lame)[0], (*lame)[1], &(*sxx)[0], &(*syy)[0],
                                  &(*sxy)[0]);
