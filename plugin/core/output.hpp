@@ -48,15 +48,21 @@ inline void base64_append(const unsigned char* bytes, std::size_t n, std::string
   }
 }
 
-// A binary VTU array's text: base64 of [byte length as uint32 little endian, the values' bytes].
+// A binary VTU array's text: base64 of [byte length as uint32 little endian, the values' bytes],
+// appended to out (bytes: a buffer, reused).
 template <class T>
-std::string vtu_binary(const std::vector<T>& values) {
+void vtu_binary_append(const std::vector<T>& values, std::vector<unsigned char>& bytes, std::string& out) {
   const std::uint32_t length = static_cast<std::uint32_t>(values.size() * sizeof(T));
-  std::vector<unsigned char> bytes(sizeof length + values.size() * sizeof(T));
+  bytes.resize(sizeof length + values.size() * sizeof(T));
   std::memcpy(bytes.data(), &length, sizeof length);  // (x86: little endian, as savevtk)
   if (!values.empty()) std::memcpy(bytes.data() + sizeof length, values.data(), values.size() * sizeof(T));
-  std::string out;
   base64_append(bytes.data(), bytes.size(), out);
+}
+template <class T>
+std::string vtu_binary(const std::vector<T>& values) {
+  std::vector<unsigned char> bytes;
+  std::string out;
+  vtu_binary_append(values, bytes, out);
   return out;
 }
 
@@ -131,9 +137,21 @@ inline std::string vtu_mesh_part(const VtuMesh& mesh) {
 inline void vtu_fields_part(const VtuMesh& mesh, const std::vector<VtuField>& cellFields,
                             const std::vector<VtuField>& pointFields, std::string& out) {
   const std::size_t nv = mesh.vertices();
+  // the text's length known ahead (each array's base64 and some 100 characters of markup): one
+  // allocation instead of the string's doublings and copies
+  std::size_t length = out.size() + 200;
+  for (const VtuField& f : cellFields) length += 4 * ((4 + 8 * f.values.size() + 2) / 3) + 100 + f.name.size();
+  for (const VtuField& f : pointFields) length += 4 * ((4 + 8 * 3 * nv + 2) / 3) + 100 + f.name.size();
+  out.reserve(length);
+  std::vector<unsigned char> bytes;
   auto array = [&](const std::string& name, int components, const std::vector<double>& values) {
-    out += "<DataArray type=\"Float64\" Name=\"" + name + "\" NumberOfComponents=\"" + std::to_string(components)
-           + "\" format=\"binary\">\n" + vtu_binary(values) + "\n</DataArray>\n";
+    out += "<DataArray type=\"Float64\" Name=\"";
+    out += name;
+    out += "\" NumberOfComponents=\"";
+    out += std::to_string(components);
+    out += "\" format=\"binary\">\n";
+    vtu_binary_append(values, bytes, out);
+    out += "\n</DataArray>\n";
   };
   for (const VtuField& f : cellFields) {
     std::vector<double> values(f.values.size());
