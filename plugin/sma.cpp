@@ -137,6 +137,12 @@
 //       each in the characters f << value would write (f's precision; plugin/core/output.hpp)
 //   long CsvWriteRows(ofstream f, real[int,int] table)   the same for every row of table, each
 //       followed by a line end
+//   long ProbeRowWrite(ofstream f, real[] [step, time, pipeElastic], real[] [node, vertex, ...],
+//                      real[] T, real[] pressure, real[] u, real[int,int] contactTable,
+//                      real[] pipeNormalMotion)   points.csv's row (sleeve-2d.idp) and its line end
+//       (flushed, as endl): step, time, then per probe point (a contact node and its vertex) the
+//       temperature, the pressure and the gap ((nx ux + ny uy) - motion) + gap0, the table's
+//       columns 1-3 (motion only when pipeElastic is not 0; contact_history.hpp probe_columns)
 //   long VtuWrite(string path, mesh Th, string vectorName, real[] vector, string scalarName,
 //                 real[] scalar, string cellNames, real[int,int] cells)   a ParaView VTU file in
 //       the bytes of savevtk(path, Th, [vector, 0], scalar, cells' columns, order = [1, 1, 0...],
@@ -787,7 +793,7 @@ long RoundToFloat(KN<double>* const& x) {
   return changed;
 }
 
-double SmaPluginVersion() { return 18.0; }
+double SmaPluginVersion() { return 19.0; }
 
 // FreeFEM's time() has a resolution of one second and clock() counts CPU time; timings of the
 // scenes are wall-clock seconds from a monotonic clock.
@@ -927,7 +933,10 @@ long VtuWrite(string* const& path, pmesh const& Th, string* const& vectorName, K
     }
     pointFields.push_back({*vectorName, 2, std::vector<double>(&(*vector)[0], &(*vector)[0] + 2 * nv)});
     pointFields.push_back({*scalarName, 1, std::vector<double>(&(*scalar)[0], &(*scalar)[0] + nv)});
-    const std::string text = sma::output::vtu_file(m, cellFields, pointFields);
+    // The mesh's part once a run (and again when the mesh changes): the frames share it.
+    static sma::output::VtuMeshText meshText;
+    std::string text = meshText.of(m);
+    sma::output::vtu_fields_part(m, cellFields, pointFields, text);
     std::FILE* file = std::fopen(path->c_str(), "wb");
     if (!file) return -1L;
     const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size();
@@ -947,18 +956,23 @@ long PlaneStressAtCentroids(pmesh const& Th, Matrice_Creuse<double>* const& Dx, 
     const long nv = mesh.nv, nt = mesh.nt;
     if (u->N() != 2 * nv) throw std::invalid_argument("u needs 2 values per vertex");
     if (lame->N() != 2) throw std::invalid_argument("lame must be [lambda, mu]");
-    const sma::SparseMatrix dx = ToEigen(Dx), dy = ToEigen(Dy);
-    if (dx.rows() != nt || dx.cols() != nv || dy.rows() != nt || dy.cols() != nv)
-      throw std::invalid_argument("Dx and Dy must be triangles x vertices (interpolate(Ph, Wh, op = 1), op = 2)");
     std::vector<int> triangles(3 * nt);
-    std::vector<double> gx(3 * nt), gy(3 * nt);
     for (long t = 0; t < nt; ++t)
-      for (int k = 0; k < 3; ++k) {
-        const int v = mesh(t, k);
-        triangles[3 * t + k] = v;
-        gx[3 * t + k] = dx.coeff(t, v);
-        gy[3 * t + k] = dy.coeff(t, v);
-      }
+      for (int k = 0; k < 3; ++k) triangles[3 * t + k] = mesh(t, k);
+    // the matrices' entries read in place (not converted to Eigen's matrices at every frame)
+    auto gradients = [&](Matrice_Creuse<double>* D) {
+      HashMatrix<int, double>* A = D->pHM();
+      if (!A || A->n != nt || A->m != nv || A->half)
+        throw std::invalid_argument("Dx and Dy must be triangles x vertices (interpolate(Ph, Wh, op = 1), op = 2)");
+      const int shift = A->fortran ? 1 : 0;
+      if (A->i) return sma::output::centroid_gradients(triangles, A->i, A->j, A->aij, A->nnz, shift);
+      if (!A->p) throw std::invalid_argument("the matrix has neither triplets nor row pointers");
+      std::vector<int> rows(A->nnz);
+      for (int r = 0; r < A->n; ++r)
+        for (int k = A->p[r] - shift; k < A->p[r + 1] - shift; ++k) rows[k] = r + shift;
+      return sma::output::centroid_gradients(triangles, rows.data(), A->j, A->aij, A->nnz, shift);
+    };
+    const std::vector<double> gx = gradients(Dx), gy = gradients(Dy);
     sxx->resize(nt); syy->resize(nt); sxy->resize(nt);
     sma::output::plane_stress_p1(triangles, gx, gy, &(*u)[0], (*lame)[0], (*lame)[1], &(*sxx)[0], &(*syy)[0],
                                  &(*sxy)[0]);
@@ -1064,6 +1078,39 @@ long CsvWriteRows(std::ostream* const& f, KNM<double>* const& table) {
   });
 }
 
+long ProbeRowWrite(std::ostream* const& f, KN<double>* const& head, KN<double>* const& at, KN<double>* const& T,
+                   KN<double>* const& pressure, KN<double>* const& u, KNM<double>* const& contact,
+                   KN<double>* const& pipeNormalMotion) {
+  return guarded("ProbeRowWrite", [&] {
+    if (head->N() != 3) throw std::invalid_argument("the row's head must be [step, time, pipeElastic]");
+    if (at->N() % 2 != 0) throw std::invalid_argument("the probe points must be pairs [contact node, vertex]");
+    const long count = at->N() / 2, m = contact->N();
+    const bool elastic = (*head)[2] != 0;
+    if (contact->M() < 4) throw std::invalid_argument("contactTable must have the columns [vertex, nx, ny, gap, ...]");
+    if (pressure->N() != m || (elastic && pipeNormalMotion->N() != m))
+      throw std::invalid_argument("pressure (and the pipe's motion) need one value per contact node");
+    std::vector<sma::contact_history::ProbePoint> points(count);
+    for (long p = 0; p < count; ++p) {
+      const long node = lrint((*at)[2 * p]), vertex = lrint((*at)[2 * p + 1]);
+      if (node < 0 || node >= m || vertex < 0 || vertex >= T->N() || 2 * vertex + 1 >= u->N())
+        throw std::invalid_argument("probe point " + std::to_string(p) + ": no contact node " + std::to_string(node)
+                                    + " or vertex " + std::to_string(vertex));
+      points[p] = {node, vertex, (*contact)(node, 1L), (*contact)(node, 2L), (*contact)(node, 3L)};
+    }
+    std::vector<double> row(2 + 3 * count);
+    row[0] = (*head)[0];
+    row[1] = (*head)[1];
+    if (count > 0)
+      sma::contact_history::probe_columns(points.data(), count, &(*T)[0], &(*pressure)[0], &(*u)[0],
+                                          elastic ? &(*pipeNormalMotion)[0] : nullptr, &row[2]);
+    std::string text = sma::output::csv_row(row.data(), row.size(), CsvPrecision(f));
+    text += '\n';
+    f->write(text.data(), (std::streamsize)text.size());
+    f->flush();
+    return 0L;
+  });
+}
+
 string* JsonQuote(Stack stack, string* const& text) { return NewString(stack, sma::json::quote(*text)); }
 string* ShellQuote(Stack stack, string* const& text) { return NewString(stack, sma::files::shell_quote(*text)); }
 
@@ -1145,6 +1192,7 @@ static void Load_Init() {
              new OneOperator8_<long, KNM<double>*, A, long, double, double, double, A, A>(ContactHeatExchange));
   Global.Add("CsvWriteRow", "(", new OneOperator2_<long, std::ostream*, A>(CsvWriteRow));
   Global.Add("CsvWriteRows", "(", new OneOperator2_<long, std::ostream*, KNM<double>*>(CsvWriteRows));
+  Global.Add("ProbeRowWrite", "(", new OneOperator8_<long, std::ostream*, A, A, A, A, A, KNM<double>*, A>(ProbeRowWrite));
   Global.Add("JsonQuote", "(", new OneOperator1s_<S, S>(JsonQuote));
   Global.Add("MeshFileError", "(", new OneOperator2s_<S, S, double>(MeshFileError));
   Global.Add("ShellQuote", "(", new OneOperator1s_<S, S>(ShellQuote));

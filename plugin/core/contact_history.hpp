@@ -49,4 +49,23 @@ inline long heat_exchange(const long* node, const double* reactions, std::size_t
   return pressing;
 }
 
+// points.csv's columns at probe points (sleeve-2d.idp: near, top, far), appended to row: per
+// point its vertex's temperature, its contact node's pressure and gap, the gap n.u (- the elastic
+// pipe's normal motion there) + the initial gap, in the script's order of operations
+// ((nx ux + ny uy) - motion) + gap0 (node i's normal (nx, ny) and initial gap0 given per point).
+struct ProbePoint {
+  long node, vertex;
+  double nx, ny, gap0;
+};
+inline void probe_columns(const ProbePoint* points, std::size_t count, const double* T, const double* pressure,
+                          const double* u, const double* pipeNormalMotion, double* row) {
+  for (std::size_t p = 0; p < count; ++p) {
+    const ProbePoint& q = points[p];
+    const double normal = q.nx * u[2 * q.vertex] + q.ny * u[2 * q.vertex + 1];
+    row[3 * p] = T[q.vertex];
+    row[3 * p + 1] = pressure[q.node];
+    row[3 * p + 2] = pipeNormalMotion ? normal - pipeNormalMotion[q.node] + q.gap0 : normal + q.gap0;
+  }
+}
+
 }  // namespace sma::contact_history

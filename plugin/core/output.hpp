@@ -17,6 +17,7 @@
 #include <charconv>
 #include <cstdint>
 #include <cstring>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -47,15 +48,21 @@ inline void base64_append(const unsigned char* bytes, std::size_t n, std::string
   }
 }
 
-// A binary VTU array's text: base64 of [byte length as uint32 little endian, the values' bytes].
+// A binary VTU array's text: base64 of [byte length as uint32 little endian, the values' bytes],
+// appended to out (bytes: a buffer, reused).
 template <class T>
-std::string vtu_binary(const std::vector<T>& values) {
+void vtu_binary_append(const std::vector<T>& values, std::vector<unsigned char>& bytes, std::string& out) {
   const std::uint32_t length = static_cast<std::uint32_t>(values.size() * sizeof(T));
-  std::vector<unsigned char> bytes(sizeof length + values.size() * sizeof(T));
+  bytes.resize(sizeof length + values.size() * sizeof(T));
   std::memcpy(bytes.data(), &length, sizeof length);  // (x86: little endian, as savevtk)
   if (!values.empty()) std::memcpy(bytes.data() + sizeof length, values.data(), values.size() * sizeof(T));
-  std::string out;
   base64_append(bytes.data(), bytes.size(), out);
+}
+template <class T>
+std::string vtu_binary(const std::vector<T>& values) {
+  std::vector<unsigned char> bytes;
+  std::string out;
+  vtu_binary_append(values, bytes, out);
   return out;
 }
 
@@ -93,10 +100,9 @@ inline std::vector<double> savevtk_vertex_values(const VtuMesh& mesh, const VtuF
   return out;
 }
 
-// The VTU file of the mesh with its cell fields and point fields (a field of 2 components is a
-// vector, padded with z = 0), in savevtk's bytes.
-inline std::string vtu_file(const VtuMesh& mesh, const std::vector<VtuField>& cellFields,
-                            const std::vector<VtuField>& pointFields) {
+// The mesh's part of a VTU file, from its start to the triangles' labels (the same for every
+// file of one mesh: a run's frames share it, VtuMeshText).
+inline std::string vtu_mesh_part(const VtuMesh& mesh) {
   const std::size_t nv = mesh.vertices(), nt = mesh.cells();
   std::string out;
   out += "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\"  byte_order=\"LittleEndian\">\n";
@@ -123,9 +129,29 @@ inline std::string vtu_file(const VtuMesh& mesh, const std::vector<VtuField>& ce
          + "\n</DataArray>\n</Cells>\n";
   out += "<CellData Scalars=\"Label\">\n<DataArray type=\"Int32\" Name=\"Label\" format=\"binary\">\n"
          + vtu_binary(labels) + "\n</DataArray>\n";
+  return out;
+}
+
+// The fields' part of a VTU file (after vtu_mesh_part's text): the cell fields, then the point
+// fields (a field of 2 components is a vector, padded with z = 0), and the file's end.
+inline void vtu_fields_part(const VtuMesh& mesh, const std::vector<VtuField>& cellFields,
+                            const std::vector<VtuField>& pointFields, std::string& out) {
+  const std::size_t nv = mesh.vertices();
+  // the text's length known ahead (each array's base64 and some 100 characters of markup): one
+  // allocation instead of the string's doublings and copies
+  std::size_t length = out.size() + 200;
+  for (const VtuField& f : cellFields) length += 4 * ((4 + 8 * f.values.size() + 2) / 3) + 100 + f.name.size();
+  for (const VtuField& f : pointFields) length += 4 * ((4 + 8 * 3 * nv + 2) / 3) + 100 + f.name.size();
+  out.reserve(length);
+  std::vector<unsigned char> bytes;
   auto array = [&](const std::string& name, int components, const std::vector<double>& values) {
-    out += "<DataArray type=\"Float64\" Name=\"" + name + "\" NumberOfComponents=\"" + std::to_string(components)
-           + "\" format=\"binary\">\n" + vtu_binary(values) + "\n</DataArray>\n";
+    out += "<DataArray type=\"Float64\" Name=\"";
+    out += name;
+    out += "\" NumberOfComponents=\"";
+    out += std::to_string(components);
+    out += "\" format=\"binary\">\n";
+    vtu_binary_append(values, bytes, out);
+    out += "\n</DataArray>\n";
   };
   for (const VtuField& f : cellFields) {
     std::vector<double> values(f.values.size());
@@ -147,8 +173,40 @@ inline std::string vtu_file(const VtuMesh& mesh, const std::vector<VtuField>& ce
     }
   }
   out += "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+}
+
+// The VTU file of the mesh with its cell fields and point fields, in savevtk's bytes.
+inline std::string vtu_file(const VtuMesh& mesh, const std::vector<VtuField>& cellFields,
+                            const std::vector<VtuField>& pointFields) {
+  std::string out = vtu_mesh_part(mesh);
+  vtu_fields_part(mesh, cellFields, pointFields, out);
   return out;
 }
+
+// Whether two arrays hold the same bytes (a -0 is not a +0 there: its float is written otherwise).
+template <class T>
+bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+// The mesh part of the last mesh written, kept with a copy of that mesh: a file of the same mesh
+// (compared value by value, a pass over its arrays) reuses the text instead of converting and
+// base64-encoding its points, connectivity, offsets, types and labels again (a third of a sleeve
+// frame's encoding). `encodings` counts the texts made.
+struct VtuMeshText {
+  VtuMesh mesh;
+  std::string text;
+  long encodings = 0;
+  const std::string& of(const VtuMesh& m) {
+    if (encodings == 0 || !same_bits(m.x, mesh.x) || !same_bits(m.y, mesh.y) || !same_bits(m.triangles, mesh.triangles)
+        || !same_bits(m.labels, mesh.labels)) {
+      text = vtu_mesh_part(m);
+      mesh = m;
+      ++encodings;
+    }
+    return text;
+  }
+};
 
 // ---- The output fields' stresses ----
 // The in-plane stresses of a P1 displacement u (interleaved: u[2v], u[2v + 1] at vertex v) on each
@@ -177,6 +235,29 @@ inline void plane_stress_p1(const std::vector<int>& triangles, const std::vector
     syy[t] = lambda * (dxu1 + dyu2) + twoMu * dyu2 - 0.;
     sxy[t] = mu * (dyu1 + dxu2);
   }
+}
+
+// plane_stress_p1's gx (or gy) from the entries of the P0 <- P1 derivative matrix (interpolate(Ph,
+// Wh, op = 1) or op = 2), given as triplets in their storage order (row: triangle, column: vertex,
+// indices from `shift`): the coefficient of triangle t's k-th vertex is its entry, the entries of
+// one (t, v) summed in their order (as Eigen's setFromTriplets, and its coeff, which the glue
+// used: the matrix converted at every frame), 0 where there is none; entries off the triangle's
+// vertices are not read.
+inline std::vector<double> centroid_gradients(const std::vector<int>& triangles, const int* rows, const int* cols,
+                                              const double* values, std::size_t nnz, int shift) {
+  const std::size_t nt = triangles.size() / 3;
+  std::vector<double> g(3 * nt, 0.);
+  std::vector<char> seen(3 * nt, 0);
+  for (std::size_t e = 0; e < nnz; ++e) {
+    const long t = rows[e] - shift, v = cols[e] - shift;
+    if (t < 0 || t >= static_cast<long>(nt)) throw std::invalid_argument("a derivative matrix's row is not a triangle");
+    for (std::size_t k = 0; k < 3; ++k)
+      if (triangles[3 * t + k] == v) {
+        g[3 * t + k] = seen[3 * t + k] ? g[3 * t + k] + values[e] : values[e];
+        seen[3 * t + k] = 1;
+      }
+  }
+  return g;
 }
 
 // ---- CSV rows ----

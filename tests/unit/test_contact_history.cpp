@@ -44,3 +44,25 @@ TEST(ContactHistory, HeatExchangeByContactStatus) {
     EXPECT_EQ(Text[k], TWant[k]) << k;
   }
 }
+
+TEST(ContactHistory, ProbeColumnsAreTemperaturePressureAndGapInTheScriptsOrder) {
+  // two probe points: contact node 1 on vertex 2, node 0 on vertex 0; 3 vertices, u interleaved
+  const ch::ProbePoint points[] = {{1, 2, 0.6, 0.8, 1e-5}, {0, 0, -1.0, 0.0, -1.0}};
+  const double T[] = {250, 260, 270}, pressure[] = {7e6, 8e6};
+  const double u[] = {-1.5e-16, 0, 0, 0, 1e-6, 2e-6};
+  const double motion[] = {-1.0, 2e-7};
+  double row[6];
+  ch::probe_columns(points, 2, T, pressure, u, nullptr, row);
+  EXPECT_EQ(row[0], 270);
+  EXPECT_EQ(row[1], 8e6);
+  EXPECT_EQ(row[2], (0.6 * 1e-6 + 0.8 * 2e-6) + 1e-5);
+  EXPECT_EQ(row[3], 250);
+  EXPECT_EQ(row[4], 7e6);
+  EXPECT_EQ(row[5], 1.5e-16 + -1.0);
+  ch::probe_columns(points, 2, T, pressure, u, motion, row);
+  EXPECT_EQ(row[2], ((0.6 * 1e-6 + 0.8 * 2e-6) - 2e-7) + 1e-5);
+  // (n.u - motion) + gap0: 1 + 1.5e-16 rounds up to 1 + 2^-52 first; n.u + (gap0 - motion) would
+  // be 1.5e-16
+  EXPECT_EQ(row[5], 0x1p-52);
+  EXPECT_NE(row[5], 1.5e-16 + (-1.0 - -1.0));
+}

@@ -116,6 +116,60 @@ TEST(Output, VtuFileHasSavevtksLayout) {
   EXPECT_EQ(text.substr(text.size() - expectedEnd.size()), expectedEnd);
 }
 
+// The mesh part and the fields part make the file (the frames write a kept mesh part and their
+// fields); the kept text is remade when any value of the mesh changes, also a +0 turned -0 (its
+// float has other bits), and only then.
+TEST(Output, MeshTextIsKeptForTheSameMeshAndRemadeForAnother) {
+  out::VtuMesh m = TwoTriangles();
+  const std::vector<out::VtuField> cells = {{"c", 1, {-0.0, 1.5}}};
+  const std::vector<out::VtuField> points = {{"u", 2, {1, 2, 3, 4, 5, 6, 7, 8}}, {"T", 1, {1, 2, 3, 4}}};
+  out::VtuMeshText kept;
+  std::string text = kept.of(m);
+  out::vtu_fields_part(m, cells, points, text);
+  EXPECT_EQ(text, out::vtu_file(m, cells, points));
+  EXPECT_EQ(kept.of(m), out::vtu_mesh_part(m));
+  EXPECT_EQ(kept.encodings, 1);
+  const out::VtuMesh first = m;
+  m.x[0] = -0.0;  // == +0, other bytes in the file
+  EXPECT_NE(out::vtu_mesh_part(m), out::vtu_mesh_part(first));
+  EXPECT_EQ(kept.of(m), out::vtu_mesh_part(m));
+  EXPECT_EQ(kept.encodings, 2);
+  m.labels[1] = 9;
+  EXPECT_EQ(kept.of(m), out::vtu_mesh_part(m));
+  m.triangles = {0, 2, 1, 1, 3, 2};
+  EXPECT_EQ(kept.of(m), out::vtu_mesh_part(m));
+  EXPECT_EQ(kept.encodings, 4);
+  EXPECT_EQ(kept.of(first), out::vtu_mesh_part(first));
+  EXPECT_EQ(kept.of(first), out::vtu_mesh_part(first));
+  EXPECT_EQ(kept.encodings, 5);
+}
+
+// The derivative coefficients read from a matrix's triplets: each (triangle, vertex) entry at the
+// triangle's local vertex, repeated entries summed in their order (0.1 + 0.2 + 0.3 is not 0.1 +
+// (0.2 + 0.3)), none: 0, an entry off the triangle's vertices ignored, indices from 1 (fortran).
+TEST(Output, CentroidGradientsAreTheMatrixEntriesAtEachTrianglesVertices) {
+  const std::vector<int> triangles = {0, 1, 2, 1, 3, 2};
+  const std::vector<int> rows = {1, 0, 0, 1, 1, 1, 0, 1};
+  const std::vector<int> cols = {2, 1, 0, 3, 3, 3, 3, 1};
+  const std::vector<double> values = {-2., 5., 4., 0.1, 0.2, 0.3, 99., 7.};
+  const std::vector<double> g = out::centroid_gradients(triangles, rows.data(), cols.data(), values.data(), 8, 0);
+  ASSERT_EQ(g.size(), 6u);
+  EXPECT_EQ(g[0], 4.);   // triangle 0, vertex 0
+  EXPECT_EQ(g[1], 5.);   // vertex 1
+  EXPECT_EQ(g[2], 0.);   // vertex 2: no entry
+  EXPECT_EQ(g[3], 7.);   // triangle 1, vertex 1
+  EXPECT_EQ(g[4], (0.1 + 0.2) + 0.3);
+  EXPECT_NE(g[4], 0.1 + (0.2 + 0.3));
+  EXPECT_EQ(g[5], -2.);
+  std::vector<int> rows1 = rows, cols1 = cols;
+  for (int& r : rows1) ++r;
+  for (int& c : cols1) ++c;
+  EXPECT_EQ(out::centroid_gradients(triangles, rows1.data(), cols1.data(), values.data(), 8, 1), g);
+  const std::vector<int> badRow = {2};
+  EXPECT_THROW(out::centroid_gradients(triangles, badRow.data(), cols.data(), values.data(), 1, 0),
+               std::invalid_argument);
+}
+
 // The CSV rows: every value in the characters printf's %.<precision>g gives (what an ostream of
 // that precision prints in its default format), checked against snprintf itself on awkward values
 // and on 250000 pseudo-random doubles of every magnitude.
