@@ -355,7 +355,8 @@ long PsorCondensed(KNM<double>* const& W, KN<double>* const& q, KN<double>* cons
 }
 
 // The factorisations of SpdFactorize, by slot, each with the contact problem SpdDelassus formed
-// on it: the glue's only state (the core holds none). They live until the process ends.
+// on it: glue state, as the step slots and VtuWrite's mesh text are (the core holds none). They
+// live until the process ends.
 struct FactorSlot {
   sma::SpdFactor factor;
   std::unique_ptr<sma::DelassusFactor> contact;
@@ -370,6 +371,17 @@ FactorSlot& SlotAt(long handle) {
   return *Factors()[handle];
 }
 sma::SpdFactor& FactorAt(long handle) { return SlotAt(handle).factor; }
+// The row of each of A's entries in their storage order, in A's index base: its triplets' rows, or
+// its row pointers expanded into `expanded`. Throws when A holds neither.
+const int* EntryRows(const HashMatrix<int, double>& A, std::vector<int>& expanded) {
+  if (A.i) return A.i;
+  if (!A.p) throw std::invalid_argument("the matrix has neither triplets nor row pointers");
+  const int shift = A.fortran ? 1 : 0;
+  expanded.resize(A.nnz);
+  for (int r = 0; r < A.n; ++r)
+    for (int k = A.p[r] - shift; k < A.p[r + 1] - shift; ++k) expanded[k] = r + shift;
+  return expanded.data();
+}
 // A FreeFEM sparse matrix as an Eigen one (its triplets; the FreeFEM matrix is not modified: sorting
 // it in place (HashMatrix::CSR) spoilt the factorisation FreeFEM keeps of it for K^-1, measured).
 sma::SparseMatrix ToEigen(Matrice_Creuse<double>* M) {
@@ -378,17 +390,12 @@ sma::SparseMatrix ToEigen(Matrice_Creuse<double>* M) {
   if (A->half)
     throw std::invalid_argument("the matrix is stored as a half (symmetric solver): build it with"
                                 " solver = sparsesolver or UMFPACK");
+  std::vector<int> expanded;
+  const int* rows = EntryRows(*A, expanded);
   std::vector<Eigen::Triplet<double, int>> t;
   t.reserve(A->nnz);
   const int shift = A->fortran ? 1 : 0;
-  if (A->i) {
-    for (size_t k = 0; k < A->nnz; ++k) t.emplace_back(A->i[k] - shift, A->j[k] - shift, A->aij[k]);
-  } else if (A->p) {
-    for (int r = 0; r < A->n; ++r)
-      for (int k = A->p[r] - shift; k < A->p[r + 1] - shift; ++k) t.emplace_back(r, A->j[k] - shift, A->aij[k]);
-  } else {
-    throw std::invalid_argument("the matrix has neither triplets nor row pointers");
-  }
+  for (size_t k = 0; k < A->nnz; ++k) t.emplace_back(rows[k] - shift, A->j[k] - shift, A->aij[k]);
   sma::SparseMatrix a(A->n, A->m);
   a.setFromTriplets(t.begin(), t.end());
   return a;
@@ -964,13 +971,9 @@ long PlaneStressAtCentroids(pmesh const& Th, Matrice_Creuse<double>* const& Dx, 
       HashMatrix<int, double>* A = D->pHM();
       if (!A || A->n != nt || A->m != nv || A->half)
         throw std::invalid_argument("Dx and Dy must be triangles x vertices (interpolate(Ph, Wh, op = 1), op = 2)");
-      const int shift = A->fortran ? 1 : 0;
-      if (A->i) return sma::output::centroid_gradients(triangles, A->i, A->j, A->aij, A->nnz, shift);
-      if (!A->p) throw std::invalid_argument("the matrix has neither triplets nor row pointers");
-      std::vector<int> rows(A->nnz);
-      for (int r = 0; r < A->n; ++r)
-        for (int k = A->p[r] - shift; k < A->p[r + 1] - shift; ++k) rows[k] = r + shift;
-      return sma::output::centroid_gradients(triangles, rows.data(), A->j, A->aij, A->nnz, shift);
+      std::vector<int> expanded;
+      return sma::output::centroid_gradients(triangles, EntryRows(*A, expanded), A->j, A->aij, A->nnz,
+                                             A->fortran ? 1 : 0);
     };
     const std::vector<double> gx = gradients(Dx), gy = gradients(Dy);
     sxx->resize(nt); syy->resize(nt); sxy->resize(nt);
