@@ -360,6 +360,13 @@ long PsorCondensed(KNM<double>* const& W, KN<double>* const& q, KN<double>* cons
 struct FactorSlot {
   sma::SpdFactor factor;
   std::unique_ptr<sma::DelassusFactor> contact;
+  // Renewed at every change of the factor or its contact operator, unique over all slots: the
+  // step solver's contact memo (StepProblem::mechanics_version) holds for one version only.
+  std::uint64_t version = 0;
+  void changed() {
+    static std::uint64_t counter = 0;
+    version = ++counter;
+  }
 };
 std::vector<std::unique_ptr<FactorSlot>>& Factors() {
   static std::vector<std::unique_ptr<FactorSlot>> factors;
@@ -411,6 +418,7 @@ long SpdFactorize(Matrice_Creuse<double>* const& M, long const& handle) {
     }
     SlotAt(slot).factor.factorize(a);
     SlotAt(slot).contact.reset();  // its W was of the previous matrix
+    SlotAt(slot).changed();
     return slot;
   });
 }
@@ -438,6 +446,7 @@ long SpdDelassus(long const& handle, Matrice_Creuse<double>* const& H, KN<double
     for (long i = 0; i < k; ++i)
       for (long j = 0; j < k; ++j) (*W)(i, j) = w(i, j);
     SlotAt(handle).contact = std::move(contact);
+    SlotAt(handle).changed();
     return k;
   });
 }
@@ -450,6 +459,7 @@ long SpdDelassusAddCompliance(long const& handle, KNM<double>* const& C, KNM<dou
     for (long i = 0; i < C->N(); ++i)
       for (long j = 0; j < C->M(); ++j) c(i, j) = (*C)(i, j);
     sma::add_obstacle_compliance(*slot.contact, c);
+    slot.changed();
     const Eigen::MatrixXd& w = slot.contact->w;
     const long k = w.rows();
     W->resize(k, k);
@@ -560,6 +570,7 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
     p.heat = &heatSlot.factor;
     p.stiffness = &mechSlot.factor;
     p.contact = mechSlot.contact.get();
+    p.mechanics_version = mechSlot.version;
     p.law = sma::ThermalLaw{(*settings)[3], (*settings)[4], (*settings)[5], (*settings)[6], (*settings)[7]};
     p.laminate = (*settings)[8];
     p.latent_scale = (*settings)[9];
@@ -595,7 +606,7 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
       throw std::invalid_argument("the contact table must have 6 columns and a row per contact node (" +
                                   std::to_string(m) + ", from contact's length)");
     if (contact->N() != 4 * m) throw std::invalid_argument("contact must hold tangentFree, mu and r: 4 values per node");
-    if (stats->N() != 13) throw std::invalid_argument("stats must have 13 entries");
+    if (stats->N() != 14) throw std::invalid_argument("stats must have 14 entries");
     p.gap.resize(m);
     p.slip_reference.resize(m);
     Eigen::VectorXd threshold(m);
@@ -619,12 +630,12 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
       for (long i = 0; i < dofs; ++i) (*u)[i] = displacement[i];
       for (long i = 0; i < m; ++i) (*table)(i, 4L) = threshold[i];
     }
-    const double values[13] = {res.converged ? 1.0 : 0.0, (double)res.iterations, (double)res.gradient_steps,
+    const double values[14] = {res.converged ? 1.0 : 0.0, (double)res.iterations, (double)res.gradient_steps,
                                (double)res.evaluations, (double)res.products, (double)res.heat_solves,
                                (double)res.stiffness_solves, (double)res.psor_sweeps, (double)res.slip_iterations,
                                res.residual, (double)res.curvature_steps, (double)res.saddle_steps,
-                               (double)res.dense_steps};
-    for (int k = 0; k < 13; ++k) (*stats)[k] = values[k];
+                               (double)res.dense_steps, (double)res.reused_solves};
+    for (int k = 0; k < 14; ++k) (*stats)[k] = values[k];
     StepFailure() = res.failure;
     return (long)res.iterations;
   });
@@ -800,7 +811,7 @@ long RoundToFloat(KN<double>* const& x) {
   return changed;
 }
 
-double SmaPluginVersion() { return 19.0; }
+double SmaPluginVersion() { return 20.0; }
 
 // FreeFEM's time() has a resolution of one second and clock() counts CPU time; timings of the
 // scenes are wall-clock seconds from a monotonic clock.

@@ -64,6 +64,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <cmath>
 #include <complex>
@@ -112,6 +113,19 @@ struct StepProblem {
   double dissipation = 0.0, dissipation_scale = 0.0;
   // The step's start: chi (the held fractions) and the fractions its heat load starts from.
   Eigen::VectorXd chi_start, b_start;
+  // Names the stiffness factor and its contact operator as they are now: the caller gives a new
+  // value whenever either changes (the glue: a counter over all refactorisations); 0: unknown,
+  // no contact solve is reused (StepSolver::contact_solve).
+  std::uint64_t mechanics_version = 0;
+  // The last frictionless contact solve of a state without fraction that kept its warm start
+  // (its input reactions solve it): the same load, gap, settings and reactions give the same
+  // displacement, which a tail step then takes without a back-solve.
+  struct ContactMemo {
+    std::uint64_t version = 0;
+    Eigen::VectorXd mech, gap, slip_reference, tangent_free, r, threshold, u;
+    double omega = 0, tol = 0;
+  };
+  mutable ContactMemo contact_memo;
 };
 
 struct StepSettings {
@@ -146,6 +160,7 @@ struct StepSettings {
   int coarse_points = 8000, coarse_after = 40, coarse_aggregate = 400, coarse_smooth = 8;
   bool coarse_additive = false;
   bool saddle_newton = true;  // Newton moves to a stationary point that is not a minimum of W (solve)
+  bool snap_trial = true;     // a block the law sends wholly to its interval ends tried at once (snap_trial)
   int stall = 10;  // iterations without halving the residual that stop the step unconverged
   // The same with the dissipation k > 0: the free ring's first transforming step (its uniform
   // mode snapping, k = 5e5 Pa, 2 s steps) crept 11 iterations at about 1e-2 and then converged
@@ -164,10 +179,12 @@ struct StepResult {
   int iterations = 0, gradient_steps = 0, curvature_steps = 0, saddle_steps = 0, variant_switches = 0, evaluations = 0,
       products = 0;
   int dense_steps = 0;  // the dense Newton moves of a step that stalled (StepSettings::dense_block)
+  int snaps = 0;        // steps solved by the snap trial (StepSolver::snap_trial)
   // Active-set rounds of newton_direction that had every free point pinned (the release rule then
   // applied without a solve).
   int pinned_blocks = 0;
   int heat_solves = 0, stiffness_solves = 0, psor_sweeps = 0, slip_iterations = 0;
+  int reused_solves = 0;  // stiffness solves the contact memo answered without a back-solve (contact_solve)
   double residual = 0.0;
   std::string failure;  // why it stopped unconverged (empty when converged)
 };
@@ -477,7 +494,7 @@ class StepSolver {
     s.r = r0;
     s.threshold = threshold0;
     s.u.resize(dofs);
-    contact_solve(mech, s);
+    contact_solve(mech, s, !transformed && !(p_.b_start.array() != 0.0).any());
     // The trace (B' u) ./ area (Eigen's row-wise product: each sum from 0, added to 0).
     s.trace.resize(n);
     const double* const u = s.u.data();
@@ -629,6 +646,7 @@ class StepSolver {
              Eigen::VectorXd& T, Eigen::VectorXd& u) {
     StepState s = evaluate(chi, r, threshold);
     switch_variants(s);
+    if (set.snap_trial && s.residual_norm > set.tol) snap_trial(s, set.tol);
     double best = s.residual_norm;  // the smallest residual so far (the watchdog's)
     double radius = 1.0;            // the trust region, fraction units (max norm)
     // Progress: the iteration at which the residual last fell to half of its value there. A step
@@ -775,21 +793,45 @@ class StepSolver {
   // Signorini-Coulomb on the condensed problem for the right side `mech`: one forward solve, the
   // PSOR (inside the slip-threshold fixed point g = mu r_n when there is friction), one backward
   // solve (the statuses for the linearisation: freeze_statuses, at the first product).
-  void contact_solve(const Eigen::VectorXd& mech, StepState& s) {
+  // `untransformed`: no point holds a fraction (the load is f .* free alone, the same from step to
+  // step in a run's tail). A frictionless solve of such a state keeps its warm start when the
+  // first sweep already finds it converged (that sweep's moves are round-off), so that the same
+  // load and reactions give the same reactions and displacement again; such a solve is
+  // remembered (p_.contact_memo) and the next identical one takes its displacement without a
+  // back-solve. The memo is a cache of that deterministic map: a run resumed from a checkpoint
+  // (no memo) computes the same bits.
+  void contact_solve(const Eigen::VectorXd& mech, StepState& s, bool untransformed = false) {
+    const bool reusable = untransformed && p_.mechanics_version != 0 && !friction();
+    if (reusable && memo_holds(mech, s)) {
+      // Counted as the solve it stands for (one stiffness solve, one sweep with contact), so that
+      // a run's counts do not depend on whether the memo was there (a resumed run's first step).
+      ++stats_.stiffness_solves;
+      ++stats_.reused_solves;
+      if (p_.contact) ++stats_.psor_sweeps;
+      s.u = p_.contact_memo.u;
+      return;
+    }
     ++stats_.stiffness_solves;
     span<const double> rhs(mech.data(), (std::size_t)mech.size());
     Eigen::VectorXd& z = work_.stiffness_z;
     p_.stiffness->forward_into(rhs, z);
     if (!p_.contact) {
       p_.stiffness->backward_in_place(z, span<double>(s.u.data(), (std::size_t)s.u.size()));
+      if (reusable) remember(mech, s);
       return;
     }
     const DelassusFactor& d = *p_.contact;
     const Eigen::VectorXd q = contact_free_motion(d, contact_motion(d, z), step_detail::as_span(p_.gap),
                                                   step_detail::as_span(p_.slip_reference),
                                                   step_detail::as_span(p_.tangent_free));
+    bool kept = false;
     if (!friction()) {
-      run_psor(q, s);
+      if (reusable) {
+        const Eigen::VectorXd warm = s.r;
+        if (run_psor(q, s) == 1) s.r = warm, kept = true;
+      } else {
+        run_psor(q, s);
+      }
     } else {
       update_thresholds(s);
       int it = 0;
@@ -808,13 +850,39 @@ class StepSolver {
     }
     add_contact_load_sparse(d, s.r, z, work_.load);
     p_.stiffness->backward_in_place(z, span<double>(s.u.data(), (std::size_t)s.u.size()));
+    if (kept) remember(mech, s);
+  }
+
+  // Whether the memo holds the contact solve of (mech, s.r): every input bit for bit.
+  bool memo_holds(const Eigen::VectorXd& mech, const StepState& s) const {
+    const StepProblem::ContactMemo& m = p_.contact_memo;
+    auto same = [](const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+      return a.size() == b.size() && std::equal(a.data(), a.data() + a.size(), b.data());
+    };
+    return m.version == p_.mechanics_version && m.omega == p_.psor.omega && m.tol == p_.psor.tol &&
+           same(m.mech, mech) && same(m.r, s.r) && same(m.threshold, s.threshold) && same(m.gap, p_.gap) &&
+           same(m.slip_reference, p_.slip_reference) && same(m.tangent_free, p_.tangent_free);
+  }
+
+  void remember(const Eigen::VectorXd& mech, const StepState& s) const {
+    StepProblem::ContactMemo& m = p_.contact_memo;
+    m.version = p_.mechanics_version;
+    m.omega = p_.psor.omega;
+    m.tol = p_.psor.tol;
+    m.mech = mech;
+    m.r = s.r;
+    m.threshold = s.threshold;
+    m.gap = p_.gap;
+    m.slip_reference = p_.slip_reference;
+    m.tangent_free = p_.tangent_free;
+    m.u = s.u;
   }
 
   bool tangential(Eigen::Index i) const {
     return p_.tangent_free[i] != 0 && p_.contact->w(2 * i + 1, 2 * i + 1) != 0.0;
   }
 
-  void run_psor(const Eigen::VectorXd& q, StepState& s) {
+  int run_psor(const Eigen::VectorXd& q, StepState& s) {
     const PsorResult res = psor_condensed(p_.contact->w, q, s.threshold, p_.psor.omega, p_.psor.tol, p_.psor.maxit,
                                           s.r, p_.psor.polish);
     stats_.psor_sweeps += res.iterations;
@@ -825,6 +893,7 @@ class StepSolver {
                                (p_.psor.polish == 0 ? " (plain PSOR, -psorpolish 0: an ill-conditioned contact problem needs "
                                                       "the active-set polish, -psorpolish 10; or raise -psormaxit)"
                                                     : " (raise -psormaxit or check omega)"));
+    return res.iterations;
   }
 
   // g = mu r_n (0 where the tangential motion is blocked); the relative change, as contact.idp's
@@ -969,6 +1038,32 @@ class StepSolver {
       if (switched == 0) return;
       stats_.variant_switches += switched;
       s = evaluate(chi, s.r, s.threshold);
+    }
+  }
+
+  // The snap (header, step 0): when the law moves at least half of the points at once (a whole-ring
+  // transformation, as the austenite ring's first step to martensite), the state with each moving
+  // point at the end of its interval that its target lies toward is evaluated once, and kept when
+  // it solves the step. Such a block's linearisation is unstable (W concave on it: each point's
+  // eigenstrain raises its neighbours' drive), and the moves below reach that vertex one pinned
+  // point per active-set round (the default run's first step: 205 products). Kept only on the
+  // residual test, so it cannot cycle; a trial that fails costs one evaluation.
+  void snap_trial(StepState& s, double tol) {
+    const Eigen::Index n = s.chi.size();
+    Eigen::VectorXd chi = s.chi;
+    Eigen::Index moved = 0;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      if (!(std::fabs(s.residual[i]) > tol)) continue;
+      const double beta = std::fabs(s.chi[i]), held = s.held[i], b = target(s, i, p_.dissipation);
+      const double end = b > beta ? (beta >= held ? 1.0 : held) : (beta > held ? held : 0.0);
+      chi[i] = s.sign[i] * end;
+      ++moved;
+    }
+    if (2 * moved < n) return;
+    StepState trial = evaluate(chi, s.r, s.threshold);
+    if (trial.residual_norm <= tol) {
+      ++stats_.snaps;
+      s = std::move(trial);
     }
   }
 

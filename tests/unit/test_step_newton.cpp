@@ -348,6 +348,9 @@ TEST(StepNewton, PlainNewtonFailsWhereTheGlobalisedSolverConverges) {
     rs.nr = 30;  // with 20 points, the fall-backs were taken only where the rounds pinned a block whole
     rs.build();
     sma::StepSettings set;
+    // The moves' globalisation is what is tested: the snap trial, which solves the whole ring's
+    // first transformation (the steps where the fall-backs are taken) at once, is off.
+    set.snap_trial = false;
     const int n = rs.nr + 1;
     Eigen::VectorXd T = Eigen::VectorXd::Constant(n, rs.Tinit), chi = Eigen::VectorXd::Zero(rs.nr);
     Eigen::VectorXd b_start = chi, r = Eigen::VectorXd::Zero(2), g = Eigen::VectorXd::Zero(1), u(n), T1(n);
@@ -479,6 +482,7 @@ TEST(StepNewton, DenseNewtonFinishesStalledSteps) {
     sma::StepSettings set;
     set.stall = 1;
     set.dense_block = dense_block;
+    set.snap_trial = false;  // the stalls tested are the first transformation's, which the trial solves at once
     const int n = rs.nr + 1;
     Eigen::VectorXd T = Eigen::VectorXd::Constant(n, rs.Tinit), chi = Eigen::VectorXd::Zero(rs.nr);
     Eigen::VectorXd b_start = chi, r = Eigen::VectorXd::Zero(2), g = Eigen::VectorXd::Zero(1), u(n), T1(n);
@@ -618,4 +622,133 @@ TEST(StepNewton, CoarseSpaceGateAndSameSteps) {
   RecordProperty("products_off", products_a);
   RecordProperty("products_on", products_c);
   RecordProperty("pressure_difference", std::to_string(worst));
+}
+
+namespace {
+
+// The radial sleeve's first step: the austenite ring at Tinit transforms at once.
+struct FirstStep {
+  RadialSleeve rs;
+  sma::StepProblem p;
+  Eigen::VectorXd chi, r, g, T, u;
+  FirstStep() {
+    rs.build();
+    rs.factor_heat(1.0);
+    const int n = rs.nr + 1;
+    T = Eigen::VectorXd::Constant(n, rs.Tinit);
+    chi = Eigen::VectorXd::Zero(rs.nr);
+    p = rs.problem(T, chi, Eigen::VectorXd::Zero(rs.nr), 1.0);
+    r = Eigen::VectorXd::Zero(2);
+    g = Eigen::VectorXd::Zero(1);
+    u = Eigen::VectorXd::Zero(n);
+  }
+};
+
+}  // namespace
+
+TEST(StepNewton, SnapTrialSolvesAWholeRingTransformationAtOnce) {
+  // The same step with and without the snap trial: the same fractions (the vertex the moves
+  // reach one pinned point per round), in one evaluation instead of the moves' products.
+  FirstStep a, b;
+  sma::StepSettings with, without;
+  without.snap_trial = false;
+  const sma::StepResult snapped = sma::solve_fraction_step(a.p, with, a.chi, a.r, a.g, a.T, a.u);
+  const sma::StepResult moved = sma::solve_fraction_step(b.p, without, b.chi, b.r, b.g, b.T, b.u);
+  ASSERT_TRUE(snapped.converged);
+  ASSERT_TRUE(moved.converged);
+  EXPECT_EQ(snapped.snaps, 1);
+  EXPECT_EQ(moved.snaps, 0);
+  EXPECT_EQ(snapped.iterations, 0);
+  EXPECT_EQ(snapped.products, 0);
+  EXPECT_GT(moved.products, 0);
+  // Every point at an end of its interval, the same as the moves found.
+  for (Eigen::Index e = 0; e < a.chi.size(); ++e) {
+    EXPECT_EQ(std::fabs(a.chi[e]) == 0.0 || std::fabs(a.chi[e]) == 1.0, true) << "point " << e;
+    EXPECT_NEAR(a.chi[e], b.chi[e], with.tol) << "point " << e;
+  }
+  expect_step_equations(a.rs, a.p, a.chi, a.T, a.u, a.r, with.tol);
+}
+
+TEST(StepNewton, SnapTrialLeavesAPartialFrontToTheMoves) {
+  // Over the radial run, a step the trial solved ends with every point at 0 or 1 in magnitude (a
+  // vertex), and the front's steps, which leave points inside their interval, are the moves'.
+  RadialSleeve rs;
+  rs.build();
+  std::vector<Eigen::VectorXd> fractions;
+  const std::vector<StepRecord> records =
+      run(rs, sma::StepSettings{}, [&](const sma::StepProblem&, const Eigen::VectorXd& chi, const Eigen::VectorXd&,
+                                       const Eigen::VectorXd&, const Eigen::VectorXd&) { fractions.push_back(chi); });
+  ASSERT_EQ(records.size(), fractions.size());
+  int snapped = 0, partial = 0;
+  for (std::size_t k = 0; k < records.size(); ++k) {
+    snapped += records[k].result.snaps;
+    if (records[k].result.snaps) {
+      EXPECT_EQ(partly_transformed(fractions[k]), 0) << "step " << k;
+    }
+    partial += partly_transformed(fractions[k]) > 0;
+  }
+  EXPECT_EQ(records.front().result.snaps, 1);  // the first step
+  EXPECT_GT(partial, 10);                       // the front's steps, solved by the moves
+  EXPECT_LT(snapped, (int)records.size() / 10);
+}
+
+TEST(StepNewton, ContactMemoGivesTheSolveItStandsFor) {
+  // The radial run's last state: every point austenite, the ring clamped on the pipe, the load
+  // the same from step to step. The same step solved twice with the memo (a mechanics version
+  // given): the second takes the first's displacement without a back-solve, and a problem
+  // without the memo (a resumed run) computes the same bits.
+  RadialSleeve rs;
+  rs.build();
+  sma::StepProblem last;
+  Eigen::VectorXd last_chi, last_r;
+  run(rs, sma::StepSettings{}, [&](const sma::StepProblem& p, const Eigen::VectorXd& chi, const Eigen::VectorXd&,
+                                   const Eigen::VectorXd&, const Eigen::VectorXd& r) {
+    last = p, last_chi = chi, last_r = r;
+  });
+  ASSERT_EQ(last_chi.cwiseAbs().maxCoeff(), 0.0);
+  ASSERT_GT(last_r[0], 0.0);
+  last.b_start = last_chi.cwiseAbs();
+  last.mechanics_version = 7;
+  const int n = rs.nr + 1;
+  auto solve = [&](const sma::StepProblem& p, Eigen::VectorXd& r, Eigen::VectorXd& u) {
+    Eigen::VectorXd chi = last_chi, g = Eigen::VectorXd::Zero(1), T(n);
+    u.setZero(n);
+    return sma::solve_fraction_step(p, sma::StepSettings{}, chi, r, g, T, u);
+  };
+  // Settle the warm start (a solve keeps its reactions once its first sweep finds them converged).
+  Eigen::VectorXd r = last_r, u;
+  for (int k = 0; k < 3; ++k) ASSERT_TRUE(solve(last, r, u).converged);
+  Eigen::VectorXd r1 = r, u1;
+  const sma::StepResult first = solve(last, r1, u1);
+  ASSERT_TRUE(first.converged);
+  EXPECT_EQ(first.reused_solves, 1);
+  EXPECT_EQ(first.stiffness_solves, 1);
+  EXPECT_EQ(first.psor_sweeps, 1);
+  EXPECT_EQ(r1, r);  // the warm start kept, bit for bit
+  // Without the memo: the same counts, the same bits, by a back-solve.
+  sma::StepProblem fresh = last;
+  fresh.contact_memo = sma::StepProblem::ContactMemo{};
+  Eigen::VectorXd r2 = r, u2;
+  const sma::StepResult second = solve(fresh, r2, u2);
+  EXPECT_EQ(second.reused_solves, 0);
+  EXPECT_EQ(second.stiffness_solves, first.stiffness_solves);
+  EXPECT_EQ(second.psor_sweeps, first.psor_sweeps);
+  EXPECT_EQ(u2, u1);
+  EXPECT_EQ(r2, r1);
+  // Another version of the factor (a refactorisation), or another load: no reuse.
+  sma::StepProblem refactored = last;
+  refactored.mechanics_version = 8;
+  Eigen::VectorXd r3 = r, u3;
+  EXPECT_EQ(solve(refactored, r3, u3).reused_solves, 0);
+  sma::StepProblem loaded = last;
+  loaded.force[1] += 1.0;
+  Eigen::VectorXd r4 = r, u4;
+  EXPECT_EQ(solve(loaded, r4, u4).reused_solves, 0);
+  // Version 0 (unknown): never.
+  sma::StepProblem unknown = last;
+  unknown.mechanics_version = 0;
+  Eigen::VectorXd r5 = r, u5;
+  EXPECT_EQ(solve(unknown, r5, u5).reused_solves, 0);
+  // (its sweep's round-off kept: the same displacement to round-off, not bit for bit)
+  EXPECT_LE((u5 - u1).lpNorm<Eigen::Infinity>(), 1e-12 * u1.lpNorm<Eigen::Infinity>());
 }
