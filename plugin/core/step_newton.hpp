@@ -122,7 +122,7 @@ struct StepProblem {
   // displacement, which a tail step then takes without a back-solve.
   struct ContactMemo {
     std::uint64_t version = 0;
-    Eigen::VectorXd mech, gap, slip_reference, tangent_free, r, threshold, u;
+    Eigen::VectorXd mech, gap, slip_reference, tangent_free, r, threshold, u, trace;
     double omega = 0, tol = 0;
   };
   mutable ContactMemo contact_memo;
@@ -494,17 +494,23 @@ class StepSolver {
     s.r = r0;
     s.threshold = threshold0;
     s.u.resize(dofs);
-    contact_solve(mech, s, !transformed && !(p_.b_start.array() != 0.0).any());
-    // The trace (B' u) ./ area (Eigen's row-wise product: each sum from 0, added to 0).
-    s.trace.resize(n);
-    const double* const u = s.u.data();
-    const int* const outer = p_.load.outerIndexPtr();
-    const int* const inner = p_.load.innerIndexPtr();
-    const double* const value = p_.load.valuePtr();
-    for (Eigen::Index i = 0; i < n; ++i) {
-      double t = 0.0;
-      for (int e = outer[i]; e < outer[i + 1]; ++e) t += value[e] * u[inner[e]];
-      s.trace[i] = (0.0 + 1.0 * t) / p_.area[i];
+    const Memo memo = contact_solve(mech, s, !transformed && !(p_.b_start.array() != 0.0).any());
+    // The trace (B' u) ./ area (Eigen's row-wise product: each sum from 0, added to 0); the
+    // memo's, of the same u, when the contact solve was the memo's.
+    if (memo == Memo::Reused && p_.contact_memo.trace.size() == n) {
+      s.trace = p_.contact_memo.trace;
+    } else {
+      s.trace.resize(n);
+      const double* const u = s.u.data();
+      const int* const outer = p_.load.outerIndexPtr();
+      const int* const inner = p_.load.innerIndexPtr();
+      const double* const value = p_.load.valuePtr();
+      for (Eigen::Index i = 0; i < n; ++i) {
+        double t = 0.0;
+        for (int e = outer[i]; e < outer[i + 1]; ++e) t += value[e] * u[inner[e]];
+        s.trace[i] = (0.0 + 1.0 * t) / p_.area[i];
+      }
+      if (memo == Memo::Remembered) p_.contact_memo.trace = s.trace;
     }
     // The law.
     s.sign.resize(n);
@@ -800,7 +806,8 @@ class StepSolver {
   // remembered (p_.contact_memo) and the next identical one takes its displacement without a
   // back-solve. The memo is a cache of that deterministic map: a run resumed from a checkpoint
   // (no memo) computes the same bits.
-  void contact_solve(const Eigen::VectorXd& mech, StepState& s, bool untransformed = false) {
+  enum class Memo { None, Remembered, Reused };  // what contact_solve did with p_.contact_memo
+  Memo contact_solve(const Eigen::VectorXd& mech, StepState& s, bool untransformed = false) {
     const bool reusable = untransformed && p_.mechanics_version != 0 && !friction();
     if (reusable && memo_holds(mech, s)) {
       // Counted as the solve it stands for (one stiffness solve, one sweep with contact), so that
@@ -809,7 +816,7 @@ class StepSolver {
       ++stats_.reused_solves;
       if (p_.contact) ++stats_.psor_sweeps;
       s.u = p_.contact_memo.u;
-      return;
+      return Memo::Reused;
     }
     ++stats_.stiffness_solves;
     span<const double> rhs(mech.data(), (std::size_t)mech.size());
@@ -817,8 +824,9 @@ class StepSolver {
     p_.stiffness->forward_into(rhs, z);
     if (!p_.contact) {
       p_.stiffness->backward_in_place(z, span<double>(s.u.data(), (std::size_t)s.u.size()));
-      if (reusable) remember(mech, s);
-      return;
+      if (!reusable) return Memo::None;
+      remember(mech, s);
+      return Memo::Remembered;
     }
     const DelassusFactor& d = *p_.contact;
     const Eigen::VectorXd q = contact_free_motion(d, contact_motion(d, z), step_detail::as_span(p_.gap),
@@ -850,7 +858,9 @@ class StepSolver {
     }
     add_contact_load_sparse(d, s.r, z, work_.load);
     p_.stiffness->backward_in_place(z, span<double>(s.u.data(), (std::size_t)s.u.size()));
-    if (kept) remember(mech, s);
+    if (!kept) return Memo::None;
+    remember(mech, s);
+    return Memo::Remembered;
   }
 
   // Whether the memo holds the contact solve of (mech, s.r): every input bit for bit.
@@ -876,6 +886,7 @@ class StepSolver {
     m.slip_reference = p_.slip_reference;
     m.tangent_free = p_.tangent_free;
     m.u = s.u;
+    m.trace.resize(0);  // evaluate's, once it has formed it from u
   }
 
   bool tangential(Eigen::Index i) const {
