@@ -542,6 +542,15 @@ Eigen::VectorXd Segment(KN<double>* a, long start, long length, const char* what
   // (a copy of the contiguous values, vectorised: an element loop cost 0.6 % of the default run)
   return Eigen::Map<const Eigen::VectorXd>(&(*a)[start], length);
 }
+// The same into `out`, whose storage is reused when its size is right (the step problem's vectors,
+// refilled at every step: a new vector each cost an allocation and a release).
+void SegmentInto(Eigen::VectorXd& out, KN<double>* a, long start, long length, const char* what) {
+  if (start + length > a->N())
+    throw std::invalid_argument(std::string(what) + ": " + std::to_string(a->N()) + " values, " +
+                                std::to_string(start + length) + " needed");
+  out.resize(length);
+  if (length > 0) out = Eigen::Map<const Eigen::VectorXd>(&(*a)[start], length);
+}
 
 // One time step of the fraction model (plugin/core/step_newton.hpp). settings = [operator slot,
 // heat factor slot, stiffness factor slot, rho, a, L, T0, Tc, laminate, rho L / dt, tol, maxit,
@@ -593,15 +602,15 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
       throw std::invalid_argument("data must hold 5 arrays of " + std::to_string(n) + " points, 2 of " +
                                   std::to_string(nodes) + " heat nodes and 2 of " + std::to_string(dofs) +
                                   " dofs; it has " + std::to_string(data->N()) + " values");
-    p.area = Segment(data, 0, n, "data");
-    p.kappa = Segment(data, n, n, "data");
-    p.threshold_offset = Segment(data, 2 * n, n, "data");
-    p.chi_start = Segment(data, 3 * n, n, "data");
-    p.b_start = Segment(data, 4 * n, n, "data");
-    p.heat_rhs = Segment(data, 5 * n, nodes, "data");
-    p.heat_mask = Segment(data, 5 * n + nodes, nodes, "data");
-    p.force = Segment(data, 5 * n + 2 * nodes, dofs, "data");
-    p.free = Segment(data, 5 * n + 2 * nodes + dofs, dofs, "data");
+    SegmentInto(p.area, data, 0, n, "data");
+    SegmentInto(p.kappa, data, n, n, "data");
+    SegmentInto(p.threshold_offset, data, 2 * n, n, "data");
+    SegmentInto(p.chi_start, data, 3 * n, n, "data");
+    SegmentInto(p.b_start, data, 4 * n, n, "data");
+    SegmentInto(p.heat_rhs, data, 5 * n, nodes, "data");
+    SegmentInto(p.heat_mask, data, 5 * n + nodes, nodes, "data");
+    SegmentInto(p.force, data, 5 * n + 2 * nodes, dofs, "data");
+    SegmentInto(p.free, data, 5 * n + 2 * nodes + dofs, dofs, "data");
     if (m > 0 && (table->M() != 6 || table->N() != m))
       throw std::invalid_argument("the contact table must have 6 columns and a row per contact node (" +
                                   std::to_string(m) + ", from contact's length)");
@@ -615,8 +624,8 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
       threshold[i] = (*table)(i, 4L);
       p.slip_reference[i] = (*table)(i, 5L);
     }
-    p.tangent_free = Segment(contact, 0, m, "contact");
-    p.mu = Segment(contact, m, m, "contact");
+    SegmentInto(p.tangent_free, contact, 0, m, "contact");
+    SegmentInto(p.mu, contact, m, m, "contact");
     Eigen::VectorXd r = Segment(contact, 2 * m, 2 * m, "contact");
     if (!p.contact && m > 0) throw std::invalid_argument("the stiffness slot has no contact problem (SpdDelassus first)");
     Eigen::VectorXd x = Segment(chi, 0, n, "chi"), temperature(nodes), displacement(dofs);

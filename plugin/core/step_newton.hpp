@@ -206,6 +206,15 @@ struct StepState {
 
 namespace step_detail {
 
+// Whether some entry of v is not zero (a plain loop, stopping at the first: Eigen's
+// (v.array() != 0).any() cost a tail step's evaluation 6k instructions a vector).
+inline bool any_nonzero(const Eigen::VectorXd& v) {
+  const double* const x = v.data();
+  for (Eigen::Index i = 0; i < v.size(); ++i)
+    if (x[i] != 0.0) return true;
+  return false;
+}
+
 // 0 .. n - 1: every point, as the increasing point lists of a product or a block take them.
 inline std::vector<Eigen::Index> all_points(Eigen::Index n) {
   std::vector<Eigen::Index> points((std::size_t)n);
@@ -459,8 +468,9 @@ class StepSolver {
     rhs.setZero(nodes);
     // No fraction anywhere (the tail of a run, every point austenite): the latent and eigenstress
     // loads are sums of exact zeros, which add_scaled_columns would skip column by column.
-    const bool transformed = (chi.array() != 0.0).any();
-    if (transformed || (p_.b_start.array() != 0.0).any())
+    const bool transformed = step_detail::any_nonzero(chi);
+    const bool started = step_detail::any_nonzero(p_.b_start);  // a fraction at the step's start
+    if (transformed || started)
       step_detail::add_scaled_columns(p_.latent, p_.latent_scale,
                                       [&](Eigen::Index i) { return std::fabs(chi[i]) - p_.b_start[i]; }, rhs.data());
     for (Eigen::Index j = 0; j < nodes; ++j) rhs[j] = p_.heat_rhs[j] + p_.heat_mask[j] * rhs[j];
@@ -494,7 +504,7 @@ class StepSolver {
     s.r = r0;
     s.threshold = threshold0;
     s.u.resize(dofs);
-    const Memo memo = contact_solve(mech, s, !transformed && !(p_.b_start.array() != 0.0).any());
+    const Memo memo = contact_solve(mech, s, !transformed && !started);
     // The trace (B' u) ./ area (Eigen's row-wise product: each sum from 0, added to 0); the
     // memo's, of the same u, when the contact solve was the memo's.
     if (memo == Memo::Reused && p_.contact_memo.trace.size() == n) {
