@@ -9,7 +9,10 @@ through the plugin's stats array, the scripts' sums and a checkpoint (docs/outpu
     docs/measurements.md#m-dense-newton), run in two halves (-checkpoint 600 -stopafter 600, then
     -resume 1): the move is in the first half's trace, so the resumed run's summary.json carries
     it through the checkpoint; its counts equal the traces' accepted moves and the steps that
-    took them (a step's lines: its iteration numbers rise; the next step starts again).
+    took them (a step's lines: its iteration numbers rise; the next step starts again);
+  - that step's dense move comes after two creeping iterations (gradient steps after Newton
+    rounds dearer than the block's points: StepSettings::early_dense), at iteration 5 at most,
+    not after the stall rule's 10 iterations without halving (iteration 22 before the rule).
 Writes results/checks/step_counts.json.
 """
 import os
@@ -39,6 +42,16 @@ def dense_moves(trace):
             moves += 1
             this_step = True
     return moves, steps + this_step
+
+
+def dense_move_iterations(trace):
+    """The iteration numbers of a trace's accepted dense moves."""
+    found = []
+    for line in trace.splitlines():
+        m = ITERATION.match(line)
+        if m and m.group(2).startswith("dense newton move") and "), taken," in m.group(2):
+            found.append(int(m.group(1)))
+    return found
 
 
 def traced(scene, name, *args):
@@ -71,6 +84,11 @@ def main():
           f"sleeve-offset stopped after step 600 (exit {first.returncode}, checkpoint written: {stopped}) with "
           f"{moves1} dense move(s) in "
           f"{steps1} step(s) before it (> 0: the count passes through the checkpoint)")
+    at = dense_move_iterations(first.stderr)
+    check(at and max(at) <= 5,
+          f"sleeve-offset's dense moves before step 600 at step iterations {at} (<= 5: after two creeping "
+          f"iterations, not the stall rule's 10 without halving)")
+    figures["offset_dense_move_iterations"] = at
     check(second.returncode == 0 and s.get("resumed_from_step") == 600
           and s.get("step_dense_moves") == moves1 + moves2 and s.get("step_dense_move_steps") == steps1 + steps2,
           f"sleeve-offset resumed from step {s.get('resumed_from_step')}: step_dense_moves {s.get('step_dense_moves')}, "

@@ -161,6 +161,12 @@ struct StepSettings {
   bool coarse_additive = false;
   bool saddle_newton = true;  // Newton moves to a stationary point that is not a minimum of W (solve)
   bool snap_trial = true;     // a block the law sends wholly to its interval ends tried at once (snap_trial)
+  // Consecutive creeping iterations (the gradient step taken after Newton rounds that cost more
+  // products than the block's free points, at most dense_block of them) after which the dense
+  // move is tried, once a step (solve); 0: only the stall rule. 2: one such iteration also
+  // happens where the moves then converge (the radial sleeve at the paper's a: a dense move there
+  // cost 523 products against 463), two in a row did not.
+  int early_dense = 2;
   int stall = 10;  // iterations without halving the residual that stop the step unconverged
   // The same with the dissipation k > 0: the free ring's first transforming step (its uniform
   // mode snapping, k = 5e5 Pa, 2 s steps) crept 11 iterations at about 1e-2 and then converged
@@ -672,8 +678,22 @@ class StepSolver {
     int marked = 0;
     int rounds = set.pdas_rounds;  // raised for the rest of the step once a curvature move stalls
     bool dense_tried = false;      // dense_newton, at most once a step
+    // Iterations that took the gradient step on a block of at most dense_block free points after
+    // their Newton rounds had cost more products than the block has points: after early_dense of
+    // them in a row the dense move (one product a point) is tried, once a step, instead of after
+    // `stall` iterations without halving (sleeve-offset's step 579 crept 20 iterations of about
+    // 250 products each).
+    int creeping = 0;  // consecutive such iterations
+    bool creeping_tried = false;
     while (s.residual_norm > set.tol && stats_.iterations < set.maxit) {
       const int stall = p_.dissipation > 0 ? set.stall_dissipative : set.stall;
+      if (set.early_dense > 0 && creeping >= set.early_dense && !dense_tried && !creeping_tried) {
+        creeping_tried = true;
+        if (dense_newton(set, s)) break;
+        best = std::min(best, s.residual_norm);
+        if (s.residual_norm <= 0.5 * mark) mark = s.residual_norm, marked = stats_.iterations;
+        continue;
+      }
       if (!dense_tried && stats_.iterations - marked >= stall) {
         // The globalisation on W stalls where the solution is a saddle of W on a small unstable
         // block (its curvature moves and gradient steps creep toward it): dense Newton moves
@@ -702,6 +722,7 @@ class StepSolver {
       }
       Eigen::VectorXd d;
       const double before = s.residual_norm;
+      const int products_before = stats_.products;
       Move tried = newton_direction(s, beta, region, set, d, set.saddle_newton, rounds);
       Search found;
       if (tried == SaddleNewton) {
@@ -725,13 +746,20 @@ class StepSolver {
         else if (found.ratio < 0.25) radius = std::max(1e-12, 0.25 * size);
         if (!found.ok && tried == Newton && radius > 1e-9) continue;  // a smaller region, the same point
       }
+      bool gradient_taken = false;
       if (!found.ok || tried == NegativeCurvature) {
         // The gradient step; after a move along unstable directions, the one of the two that
         // leaves the smaller residual (a snap of the whole ring goes faster by the local steps).
         ++stats_.gradient_steps;
         Search gradient = line_search(s, beta, cl, gradient_direction(s, cl), set.tol);
         if (gradient.ok && (!found.ok || gradient.state.residual_norm < found.state.residual_norm))
-          found = std::move(gradient);
+          found = std::move(gradient), gradient_taken = true;
+      }
+      {
+        long nfree = 0;
+        for (char f : cl.free) nfree += f;
+        const bool crept = gradient_taken && nfree <= set.dense_block && stats_.products - products_before > nfree;
+        creeping = crept ? creeping + 1 : 0;
       }
       if (!found.ok) {
         stats_.failure = "neither the trust-region move nor the gradient step lowers the step's energy";
