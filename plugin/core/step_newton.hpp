@@ -581,7 +581,6 @@ class StepSolver {
     const RowMajorMatrix& interp_rows = interp_by_rows();
     work_.dalpha.resize(n);
     work_.dc.resize(n);
-    work_.ds.resize(n);
     const double rhoa = p_.law.rho * p_.law.a, latent_slope = p_.law.rho * p_.law.latent / p_.law.T0;
     const int* const row_outer = interp_rows.outerIndexPtr();
     const int* const row_inner = interp_rows.innerIndexPtr();
@@ -589,10 +588,16 @@ class StepSolver {
     const double* const dT = work_.dT.data();
     double* const dalpha = work_.dalpha.data();
     double* const dc = work_.dc.data();
-    double* const ds = work_.ds.data();
     const double* const alpha = s.alpha.data();
     const double* const chi = s.chi.data();
     const double* const sign = s.sign.data();
+    // Mechanics: (B ds) .* free, the linearised contact step; B ds summed in the same loop, column
+    // by column in rows' (increasing) order as before.
+    work_.mech.setZero(dofs);
+    outer = p_.load.outerIndexPtr();
+    inner = p_.load.innerIndexPtr();
+    value = p_.load.valuePtr();
+    double* const mech = work_.mech.data();
     std::size_t a = 0;
     for (const Eigen::Index i : rows) {
       double dTq = 0.0;
@@ -602,18 +607,9 @@ class StepSolver {
       if (in_sub) ++a;
       dalpha[i] = alpha[i] > 0 ? -rhoa * dTq : 0.0;
       dc[i] = latent_slope * dTq;
-      ds[i] = dalpha[i] * chi[i] + alpha[i] * sign[i] * w;
-    }
-    // Mechanics: (B ds) .* free, the linearised contact step.
-    work_.mech.setZero(dofs);
-    outer = p_.load.outerIndexPtr();
-    inner = p_.load.innerIndexPtr();
-    value = p_.load.valuePtr();
-    double* const mech = work_.mech.data();
-    for (const Eigen::Index i : rows) {
-      const double dsi = ds[i];
-      if (dsi == 0.0) continue;  // exact zeros, which leave the (+0 started) sums as they are
-      for (int e = outer[i], end = outer[i + 1]; e < end; ++e) mech[inner[e]] += value[e] * dsi;
+      const double ds = dalpha[i] * chi[i] + alpha[i] * sign[i] * w;
+      if (ds == 0.0) continue;  // exact zeros, which leave the (+0 started) sums as they are
+      for (int e = outer[i], end = outer[i + 1]; e < end; ++e) mech[inner[e]] += value[e] * ds;
     }
     const double* const dof_free = p_.free.data();
     for (Eigen::Index j = 0; j < dofs; ++j) mech[j] = mech[j] * dof_free[j];
@@ -1409,7 +1405,7 @@ class StepSolver {
   using RowMajorMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
   // Vectors of the products (force_derivative_on), kept over the step: no allocation per product.
   struct Workspace {
-    Eigen::VectorXd heat, dT, dalpha, dc, ds, mech, du;
+    Eigen::VectorXd heat, dT, dalpha, dc, mech, du;
     Eigen::VectorXd heat_z, stiffness_z, load, dr;  // the back-solves' and the contact load's
     Eigen::VectorXd moving_motion, moving_reaction;  // contact_linear's moving rows: -dq and dr
     Eigen::VectorXd rhs, points;                      // evaluate's heat load and T at the points
