@@ -601,6 +601,7 @@ class StepSolver {
     std::size_t a = 0;
     for (const Eigen::Index i : rows) {
       double dTq = 0.0;
+      #pragma GCC unroll 4
       for (int e = row_outer[i], end = row_outer[i + 1]; e < end; ++e) dTq += row_value[e] * dT[row_inner[e]];
       const bool in_sub = a < k && sub[a] == i;
       const double w = in_sub ? w_sub[a] : 0.0;
@@ -609,6 +610,7 @@ class StepSolver {
       dc[i] = latent_slope * dTq;
       const double ds = dalpha[i] * chi[i] + alpha[i] * sign[i] * w;
       if (ds == 0.0) continue;  // exact zeros, which leave the (+0 started) sums as they are
+      #pragma GCC unroll 4
       for (int e = outer[i], end = outer[i + 1]; e < end; ++e) mech[inner[e]] += value[e] * ds;
     }
     const double* const dof_free = p_.free.data();
@@ -624,6 +626,7 @@ class StepSolver {
     for (std::size_t b = 0; b < k; ++b) {
       const Eigen::Index i = sub[b];
       double t = 0.0;
+      #pragma GCC unroll 4
       for (int e = outer[i], end = outer[i + 1]; e < end; ++e) t += value[e] * du[inner[e]];
       const double dtrace = (0.0 + 1.0 * t) / area[i];  // as Eigen's row-major product: 0 + 1 t
       const double dalpha_i = dalpha[i], beta = std::fabs(chi[i]);
