@@ -601,7 +601,6 @@ class StepSolver {
     std::size_t a = 0;
     for (const Eigen::Index i : rows) {
       double dTq = 0.0;
-      #pragma GCC unroll 4
       for (int e = row_outer[i], end = row_outer[i + 1]; e < end; ++e) dTq += row_value[e] * dT[row_inner[e]];
       const bool in_sub = a < k && sub[a] == i;
       const double w = in_sub ? w_sub[a] : 0.0;
@@ -626,7 +625,6 @@ class StepSolver {
     for (std::size_t b = 0; b < k; ++b) {
       const Eigen::Index i = sub[b];
       double t = 0.0;
-      #pragma GCC unroll 4
       for (int e = outer[i], end = outer[i + 1]; e < end; ++e) t += value[e] * du[inner[e]];
       const double dtrace = (0.0 + 1.0 * t) / area[i];  // as Eigen's row-major product: 0 + 1 t
       const double dalpha_i = dalpha[i], beta = std::fabs(chi[i]);
