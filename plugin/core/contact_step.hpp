@@ -72,7 +72,7 @@ inline void add_contact_load_sparse(const DelassusFactor& d, const Eigen::Vector
   for (std::size_t j = 0; j < columns; ++j) {
     const double rj = reaction[d.rows[j]];
     if (rj == 0.0) continue;  // its terms are exact zeros, which leave the (+0 started) sums as they are
-    #pragma GCC unroll 4
+    #pragma GCC unroll 8
     for (int e = outer[j], end = outer[j + 1]; e < end; ++e) sum[inner[e]] += value[e] * rj;
   }
   z += work;
@@ -86,7 +86,7 @@ inline double contact_motion_at(const DelassusFactor& d, int column, const Eigen
   const double* const value = d.y_scaled.valuePtr();
   const double* const zz = z.data();
   double t = 0.0;
-  #pragma GCC unroll 4
+  #pragma GCC unroll 8
   for (int e = d.y_scaled.outerIndexPtr()[column], end = d.y_scaled.outerIndexPtr()[column + 1]; e < end; ++e)
     t += value[e] * zz[inner[e]];
   return 0.0 + 1.0 * t;

@@ -55,7 +55,7 @@ inline void unit_lower_solve_in_place(const SparseMatrix& l, double* z) {
     const int end = counts ? e + counts[i] : outer[i + 1];
     while (e < end && inner[e] < i) ++e;
     if (e < end && inner[e] == i) ++e;
-    #pragma GCC unroll 4
+    #pragma GCC unroll 8
     for (; e < end; ++e) z[inner[e]] -= t * value[e];
   }
 }
@@ -74,7 +74,7 @@ inline void unit_upper_solve_in_place(const SparseMatrix& l, double* z) {
     const int end = counts ? e + counts[i] : outer[i + 1];
     while (e < end && inner[e] < i) ++e;
     if (e < end && inner[e] == i) ++e;
-    #pragma GCC unroll 4
+    #pragma GCC unroll 8
     for (; e < end; ++e) t -= value[e] * z[inner[e]];
     z[i] = t;
   }
