@@ -61,13 +61,19 @@ inline void add_contact_load_sparse(const DelassusFactor& d, const Eigen::Vector
                                     Eigen::VectorXd& work) {
   if (!(r.lpNorm<Eigen::Infinity>() > 0)) return;
   work.setZero(z.size());
-  const int* outer = d.y.outerIndexPtr();
-  const int* inner = d.y.innerIndexPtr();
-  const double* value = d.y.valuePtr();
-  for (std::size_t j = 0; j < d.rows.size(); ++j) {
-    const double rj = r[d.rows[j]];
+  // Through raw pointers: a store through work[] could alias the vectors' own members, which the
+  // loop would otherwise reload at every term.
+  double* const sum = work.data();
+  const double* const reaction = r.data();
+  const int* const outer = d.y.outerIndexPtr();
+  const int* const inner = d.y.innerIndexPtr();
+  const double* const value = d.y.valuePtr();
+  const std::size_t columns = d.rows.size();
+  for (std::size_t j = 0; j < columns; ++j) {
+    const double rj = reaction[d.rows[j]];
     if (rj == 0.0) continue;  // its terms are exact zeros, which leave the (+0 started) sums as they are
-    for (int e = outer[j]; e < outer[j + 1]; ++e) work[inner[e]] += value[e] * rj;
+    #pragma GCC unroll 8
+    for (int e = outer[j], end = outer[j + 1]; e < end; ++e) sum[inner[e]] += value[e] * rj;
   }
   z += work;
 }
@@ -76,9 +82,13 @@ inline void add_contact_load_sparse(const DelassusFactor& d, const Eigen::Vector
 // none: 0), as Eigen's product forms it (a sum from 0, added to 0).
 inline double contact_motion_at(const DelassusFactor& d, int column, const Eigen::VectorXd& z) {
   if (column < 0) return 0.0;
+  const int* const inner = d.y_scaled.innerIndexPtr();
+  const double* const value = d.y_scaled.valuePtr();
+  const double* const zz = z.data();
   double t = 0.0;
-  for (int e = d.y_scaled.outerIndexPtr()[column]; e < d.y_scaled.outerIndexPtr()[column + 1]; ++e)
-    t += d.y_scaled.valuePtr()[e] * z[d.y_scaled.innerIndexPtr()[e]];
+  #pragma GCC unroll 8
+  for (int e = d.y_scaled.outerIndexPtr()[column], end = d.y_scaled.outerIndexPtr()[column + 1]; e < end; ++e)
+    t += value[e] * zz[inner[e]];
   return 0.0 + 1.0 * t;
 }
 

@@ -36,6 +36,50 @@ namespace sma {
 
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
+// z = L^-1 z for the unit lower triangular L stored strictly below its diagonal (column-major),
+// as Eigen's sparse triangular solve forms it (SparseCore/TriangularSolver.h, column-major
+// lower: column by column from the first, a zero entry's column skipped, each entry below the
+// diagonal z_r -= z_i l_ri in the column's order), through raw pointers (Eigen's loop reads the
+// vector through coeffRef(row, col) and its iterator's bounds at every entry): the same
+// operations in the same order, the same bits.
+inline void unit_lower_solve_in_place(const SparseMatrix& l, double* z) {
+  const int n = (int)l.cols();
+  const int* const outer = l.outerIndexPtr();
+  const int* const counts = l.innerNonZeroPtr();  // null when compressed
+  const int* const inner = l.innerIndexPtr();
+  const double* const value = l.valuePtr();
+  for (int i = 0; i < n; ++i) {
+    const double t = z[i];
+    if (t == 0.0) continue;
+    int e = outer[i];
+    const int end = counts ? e + counts[i] : outer[i + 1];
+    while (e < end && inner[e] < i) ++e;
+    if (e < end && inner[e] == i) ++e;
+    #pragma GCC unroll 8
+    for (; e < end; ++e) z[inner[e]] -= t * value[e];
+  }
+}
+// z = L'^-1 z (the unit upper triangular L', row i of which is column i of L), as Eigen's
+// row-major upper solve forms it: rows from the last, t = z_i - sum l_ri z_r in the column's
+// order, then z_i = t.
+inline void unit_upper_solve_in_place(const SparseMatrix& l, double* z) {
+  const int n = (int)l.cols();
+  const int* const outer = l.outerIndexPtr();
+  const int* const counts = l.innerNonZeroPtr();
+  const int* const inner = l.innerIndexPtr();
+  const double* const value = l.valuePtr();
+  for (int i = n - 1; i >= 0; --i) {
+    double t = z[i];
+    int e = outer[i];
+    const int end = counts ? e + counts[i] : outer[i + 1];
+    while (e < end && inner[e] < i) ++e;
+    if (e < end && inner[e] == i) ++e;
+    #pragma GCC unroll 8
+    for (; e < end; ++e) t -= value[e] * z[inner[e]];
+    z[i] = t;
+  }
+}
+
 // Largest |a_ij - a_ji| over the largest off-diagonal |a_ij| (0 for a diagonal matrix): FreeFEM
 // assembles both halves of a symmetric form, equal to round-off.
 inline double asymmetry(const SparseMatrix& a) {
@@ -179,25 +223,32 @@ class SpdFactor {
     check_size(b.size(), "right-hand side");
     z.resize(n_);
     const auto& perm = permutation_p();
-    if (perm.size())
-      for (int i = 0; i < n_; ++i) z[perm[i]] = b.begin()[i];  // z = P b
-    else
-      for (int i = 0; i < n_; ++i) z[i] = b.begin()[i];
-    if (nested_) nd_.matrixL().solveInPlace(z);
-    else ldlt_.matrixL().solveInPlace(z);
+    double* const zz = z.data();
+    const double* const bb = b.begin();
+    if (perm.size()) {
+      const int* const p = perm.data();
+      for (int i = 0; i < n_; ++i) zz[p[i]] = bb[i];  // z = P b
+    } else {
+      for (int i = 0; i < n_; ++i) zz[i] = bb[i];
+    }
+    unit_lower_solve_in_place(factor_l(), zz);
   }
   void backward_in_place(Eigen::VectorXd& z, span<double> x) const {
     check_size((std::size_t)z.size(), "forward-solved vector");
     check_size(x.size(), "solution");
     // D^-1 z as Eigen's inverse diagonal product forms it, (1 / d_i) z_i (vectorD() is a copy).
-    for (int i = 0; i < n_; ++i) z[i] = inverse_diagonal_[i] * z[i];
-    if (nested_) nd_.matrixU().solveInPlace(z);
-    else ldlt_.matrixU().solveInPlace(z);
+    double* const zz = z.data();
+    const double* const inverse = inverse_diagonal_.data();
+    for (int i = 0; i < n_; ++i) zz[i] = inverse[i] * zz[i];
+    unit_upper_solve_in_place(factor_l(), zz);
     const auto& perm = nested_ ? nd_pinv_.indices() : ldlt_.permutationPinv().indices();
-    if (perm.size())
-      for (int i = 0; i < n_; ++i) x.begin()[perm[i]] = z[i];  // x = P' z
-    else
-      for (int i = 0; i < n_; ++i) x.begin()[i] = z[i];
+    double* const xx = x.begin();
+    if (perm.size()) {
+      const int* const p = perm.data();
+      for (int i = 0; i < n_; ++i) xx[p[i]] = zz[i];  // x = P' z
+    } else {
+      for (int i = 0; i < n_; ++i) xx[i] = zz[i];
+    }
   }
   // X = A^-1 B for a block of right-hand sides.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const {

@@ -603,6 +603,7 @@ class StepSolver {
     for (std::size_t a = 0; a < k; ++a) {
       const Eigen::Index i = sub[a];
       const double w = w_sub[a];
+      if (w == 0.0) continue;  // exact zeros, which leave the (+0 started) sums as they are
       if (p_.dissipation > 0) {
         double source = p_.latent_scale * w;
         source += (upper[(std::size_t)i] ? -p_.dissipation_scale : p_.dissipation_scale) * w;
@@ -611,54 +612,64 @@ class StepSolver {
         for (int e = outer[i]; e < outer[i + 1]; ++e) heat[inner[e]] += (scale * value[e]) * w;
       }
     }
-    for (Eigen::Index j = 0; j < nodes; ++j) work_.heat[j] = p_.heat_mask[j] * work_.heat[j];
+    const double* const mask = p_.heat_mask.data();
+    for (Eigen::Index j = 0; j < nodes; ++j) heat[j] = mask[j] * heat[j];
     work_.dT.resize(nodes);
     heat_solve(work_.heat, work_.dT);
     // T, alpha, c and the eigenstress change at rows.
     const RowMajorMatrix& interp_rows = interp_by_rows();
     work_.dalpha.resize(n);
     work_.dc.resize(n);
-    work_.ds.resize(n);
     const double rhoa = p_.law.rho * p_.law.a, latent_slope = p_.law.rho * p_.law.latent / p_.law.T0;
     const int* const row_outer = interp_rows.outerIndexPtr();
     const int* const row_inner = interp_rows.innerIndexPtr();
     const double* const row_value = interp_rows.valuePtr();
     const double* const dT = work_.dT.data();
-    std::size_t a = 0;
-    for (const Eigen::Index i : rows) {
-      double dTq = 0.0;
-      for (int e = row_outer[i]; e < row_outer[i + 1]; ++e) dTq += row_value[e] * dT[row_inner[e]];
-      const bool in_sub = a < k && sub[a] == i;
-      const double w = in_sub ? w_sub[a] : 0.0;
-      if (in_sub) ++a;
-      work_.dalpha[i] = s.alpha[i] > 0 ? -rhoa * dTq : 0.0;
-      work_.dc[i] = latent_slope * dTq;
-      work_.ds[i] = work_.dalpha[i] * s.chi[i] + s.alpha[i] * s.sign[i] * w;
-    }
-    // Mechanics: (B ds) .* free, the linearised contact step.
+    double* const dalpha = work_.dalpha.data();
+    double* const dc = work_.dc.data();
+    const double* const alpha = s.alpha.data();
+    const double* const chi = s.chi.data();
+    const double* const sign = s.sign.data();
+    // Mechanics: (B ds) .* free, the linearised contact step; B ds summed in the same loop, column
+    // by column in rows' (increasing) order as before.
     work_.mech.setZero(dofs);
     outer = p_.load.outerIndexPtr();
     inner = p_.load.innerIndexPtr();
     value = p_.load.valuePtr();
     double* const mech = work_.mech.data();
+    std::size_t a = 0;
     for (const Eigen::Index i : rows) {
-      const double ds = work_.ds[i];
-      for (int e = outer[i]; e < outer[i + 1]; ++e) mech[inner[e]] += value[e] * ds;
+      double dTq = 0.0;
+      for (int e = row_outer[i], end = row_outer[i + 1]; e < end; ++e) dTq += row_value[e] * dT[row_inner[e]];
+      const bool in_sub = a < k && sub[a] == i;
+      const double w = in_sub ? w_sub[a] : 0.0;
+      if (in_sub) ++a;
+      dalpha[i] = alpha[i] > 0 ? -rhoa * dTq : 0.0;
+      dc[i] = latent_slope * dTq;
+      const double ds = dalpha[i] * chi[i] + alpha[i] * sign[i] * w;
+      if (ds == 0.0) continue;  // exact zeros, which leave the (+0 started) sums as they are
+      #pragma GCC unroll 4
+      for (int e = outer[i], end = outer[i + 1]; e < end; ++e) mech[inner[e]] += value[e] * ds;
     }
-    for (Eigen::Index j = 0; j < dofs; ++j) work_.mech[j] = work_.mech[j] * p_.free[j];
+    const double* const dof_free = p_.free.data();
+    for (Eigen::Index j = 0; j < dofs; ++j) mech[j] = mech[j] * dof_free[j];
     work_.du.resize(dofs);
     contact_linear(s, work_.mech, work_.du);
     // The trace change (B' du) ./ area and the force's change at sub.
     const double* const du = work_.du.data();
+    const double* const area = p_.area.data();
+    const double* const trace = s.trace.data();
+    const double* const q = s.q.data();
+    const double laminate = p_.laminate;
     for (std::size_t b = 0; b < k; ++b) {
       const Eigen::Index i = sub[b];
       double t = 0.0;
-      for (int e = outer[i]; e < outer[i + 1]; ++e) t += value[e] * du[inner[e]];
-      const double dtrace = (0.0 + 1.0 * t) / p_.area[i];  // as Eigen's row-major product: 0 + 1 t
-      const double dalpha = work_.dalpha[i], beta = std::fabs(s.chi[i]);
-      const double ddrive = dalpha * std::fabs(s.trace[i]) + s.alpha[i] * s.sign[i] * dtrace - work_.dc[i];
-      const double dq = 2.0 * s.alpha[i] * dalpha / p_.laminate;
-      df_sub[b] = ddrive - s.q[i] * w_sub[b] - dq * beta + (upper[(std::size_t)i] ? dq : 0.0);
+      for (int e = outer[i], end = outer[i + 1]; e < end; ++e) t += value[e] * du[inner[e]];
+      const double dtrace = (0.0 + 1.0 * t) / area[i];  // as Eigen's row-major product: 0 + 1 t
+      const double dalpha_i = dalpha[i], beta = std::fabs(chi[i]);
+      const double ddrive = dalpha_i * std::fabs(trace[i]) + alpha[i] * sign[i] * dtrace - dc[i];
+      const double dq = 2.0 * alpha[i] * dalpha_i / laminate;
+      df_sub[b] = ddrive - q[i] * w_sub[b] - dq * beta + (upper[(std::size_t)i] ? dq : 0.0);
     }
   }
 
@@ -1008,10 +1019,13 @@ class StepSolver {
         column_of_row_.assign((std::size_t)d.w.rows(), -1);
         for (std::size_t j = 0; j < d.rows.size(); ++j) column_of_row_[(std::size_t)d.rows[j]] = (int)j;
       }
-      Eigen::VectorXd b(k);
+      Eigen::VectorXd& b = work_.moving_motion;
+      b.resize(k);
       for (Eigen::Index a = 0; a < k; ++a)  // W dr = dq = -d(H u_free), on the moving rows only
         b[a] = -contact_motion_at(d, column_of_row_[(std::size_t)s.moving[(std::size_t)a]], z);
-      const Eigen::VectorXd x = s.statuses.solve(b);
+      Eigen::VectorXd& x = work_.moving_reaction;
+      x.resize(k);
+      x = s.statuses.solve(b);  // into x's storage (the same operations as a new vector's)
       Eigen::VectorXd& dr = work_.dr;
       dr.setZero(p_.contact->w.rows());
       for (Eigen::Index a = 0; a < k; ++a) {
@@ -1536,8 +1550,9 @@ class StepSolver {
   using RowMajorMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
   // Vectors of the products (force_derivative_on), kept over the step: no allocation per product.
   struct Workspace {
-    Eigen::VectorXd heat, dT, dalpha, dc, ds, mech, du;
+    Eigen::VectorXd heat, dT, dalpha, dc, mech, du;
     Eigen::VectorXd heat_z, stiffness_z, load, dr;  // the back-solves' and the contact load's
+    Eigen::VectorXd moving_motion, moving_reaction;  // contact_linear's moving rows: -dq and dr
     Eigen::VectorXd rhs, points;                      // evaluate's heat load and T at the points
   };
 

@@ -117,6 +117,49 @@ TEST(SparseSpd, WorkVectorHalvesAreTheSolve) {
   EXPECT_THROW(f.backward_in_place(wrong, halves), std::invalid_argument);
 }
 
+// The raw-pointer triangular solves of the halves give Eigen's sparse triangular solves
+// (SimplicialLDLT's matrixL() and matrixU() views) bit for bit, signed zeros included, on a
+// factor's L and on a strictly lower L stored uncompressed with its diagonal entries present
+// (which both skip); and they solve L x = b, L' x = b to round-off (an independent dense solve).
+TEST(SparseSpd, TriangularSolvesAreEigens) {
+  std::mt19937 rng(4);
+  Eigen::SimplicialLDLT<SparseMatrix> reference(grid_laplacian(10, 9, 0.03));
+  const SparseMatrix& l = reference.matrixL().nestedExpression();
+  // An uncompressed L with explicit (ignored) unit diagonal entries, as the skip rules allow.
+  const int n = 40;
+  SparseMatrix other(n, n);
+  other.reserve(Eigen::VectorXi::Constant(n, 6));
+  std::uniform_real_distribution<double> uniform(-0.5, 0.5);
+  for (int j = 0; j < n; ++j) {
+    other.insert(j, j) = 7.0;  // not read: the views are unit-diagonal
+    for (int i = j + 1; i < n; i += 1 + (i * 7 + j) % 5) other.insert(i, j) = uniform(rng);
+  }
+  ASSERT_FALSE(other.isCompressed());
+  const SparseMatrix* const matrices[] = {&l, &other};
+  for (const SparseMatrix* m : matrices) {
+    const int size = (int)m->rows();
+    Eigen::VectorXd b = random_vector(size, rng);
+    b[0] = -0.0, b[3] = 0.0, b[size - 1] = -0.0, b[size / 2] = 0.0;
+    Eigen::VectorXd lower = b, upper = b, lower_eigen = b, upper_eigen = b;
+    sma::unit_lower_solve_in_place(*m, lower.data());
+    sma::unit_upper_solve_in_place(*m, upper.data());
+    Eigen::TriangularView<const SparseMatrix, Eigen::UnitLower>(*m).solveInPlace(lower_eigen);
+    Eigen::TriangularView<const Eigen::Transpose<const SparseMatrix>, Eigen::UnitUpper>(m->transpose())
+        .solveInPlace(upper_eigen);
+    for (int i = 0; i < size; ++i) {
+      ASSERT_EQ(lower[i], lower_eigen[i]) << "row " << i;
+      ASSERT_EQ(std::signbit(lower[i]), std::signbit(lower_eigen[i])) << "row " << i;
+      ASSERT_EQ(upper[i], upper_eigen[i]) << "row " << i;
+      ASSERT_EQ(std::signbit(upper[i]), std::signbit(upper_eigen[i])) << "row " << i;
+    }
+    const Eigen::MatrixXd dense(*m);
+    Eigen::MatrixXd unit = dense.triangularView<Eigen::StrictlyLower>();
+    unit.diagonal().setOnes();
+    EXPECT_LT(relative(unit * lower, b), 1e-13);
+    EXPECT_LT(relative(unit.transpose() * upper, b), 1e-13);
+  }
+}
+
 // A Dirichlet row marked by FreeFEM's tgv (1e30 on the diagonal, its couplings kept): its unknown
 // is b_i / 1e30 and the others solve the reduced system.
 TEST(SparseSpd, TgvRowsBehaveAsDirichlet) {
