@@ -534,22 +534,21 @@ long StepOperatorsSet(long const& handle, Matrice_Creuse<double>* const& B, Matr
   });
 }
 
-Eigen::VectorXd Segment(KN<double>* a, long start, long length, const char* what) {
-  if (start + length > a->N())
-    throw std::invalid_argument(std::string(what) + ": " + std::to_string(a->N()) + " values, " +
-                                std::to_string(start + length) + " needed");
-  if (length == 0) return Eigen::VectorXd();
-  // (a copy of the contiguous values, vectorised: an element loop cost 0.6 % of the default run)
-  return Eigen::Map<const Eigen::VectorXd>(&(*a)[start], length);
-}
-// The same into `out`, whose storage is reused when its size is right (the step problem's vectors,
-// refilled at every step: a new vector each cost an allocation and a release).
+// a[start .. start + length) into `out`, whose storage is reused when its size is right (the step
+// problem's vectors, refilled at every step: a new vector each cost an allocation and a release).
 void SegmentInto(Eigen::VectorXd& out, KN<double>* a, long start, long length, const char* what) {
   if (start + length > a->N())
     throw std::invalid_argument(std::string(what) + ": " + std::to_string(a->N()) + " values, " +
                                 std::to_string(start + length) + " needed");
   out.resize(length);
+  // (a copy of the contiguous values, vectorised: an element loop cost 0.6 % of the default run)
   if (length > 0) out = Eigen::Map<const Eigen::VectorXd>(&(*a)[start], length);
+}
+// The same as a new vector.
+Eigen::VectorXd Segment(KN<double>* a, long start, long length, const char* what) {
+  Eigen::VectorXd out;
+  SegmentInto(out, a, start, length, what);
+  return out;
 }
 
 // One time step of the fraction model (plugin/core/step_newton.hpp). settings = [operator slot,

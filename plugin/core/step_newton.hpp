@@ -766,12 +766,10 @@ class StepSolver {
         if (gradient.ok && (!found.ok || gradient.state.residual_norm < found.state.residual_norm))
           found = std::move(gradient), gradient_taken = true;
       }
-      {
-        long nfree = 0;
-        for (char f : cl.free) nfree += f;
-        const bool crept = gradient_taken && nfree <= set.dense_block && stats_.products - products_before > nfree;
-        creeping = crept ? creeping + 1 : 0;
-      }
+      int nfree = 0;
+      for (char f : cl.free) nfree += f;
+      const bool crept = gradient_taken && nfree <= set.dense_block && stats_.products - products_before > nfree;
+      creeping = crept ? creeping + 1 : 0;
       if (!found.ok) {
         stats_.failure = "neither the trust-region move nor the gradient step lowers the step's energy";
         break;
@@ -782,8 +780,6 @@ class StepSolver {
       best = std::min(best, s.residual_norm);
       if (s.residual_norm <= 0.5 * mark) mark = s.residual_norm, marked = stats_.iterations;
       if (set.trace) {
-        int nfree = 0;
-        for (char f : cl.free) nfree += f;
         std::fprintf(set.trace, "step iteration %d: %s move, residual %.3e, %d free points, %d evaluations, %d products\n",
                      stats_.iterations,
                      tried == Newton ? "newton" : tried == NegativeCurvature ? "curvature" : tried == SaddleNewton ? "saddle newton" : "gradient",
@@ -1113,13 +1109,13 @@ class StepSolver {
   // residual test, so it cannot cycle; a trial that fails costs one evaluation.
   void snap_trial(StepState& s, double tol) {
     const Eigen::Index n = s.chi.size();
+    const Eigen::VectorXd beta = s.chi.cwiseAbs();
+    const Classified cl = classify(s, beta);  // the intervals: [0, held] or [held, 1]
     Eigen::VectorXd chi = s.chi;
     Eigen::Index moved = 0;
     for (Eigen::Index i = 0; i < n; ++i) {
       if (!(std::fabs(s.residual[i]) > tol)) continue;
-      const double beta = std::fabs(s.chi[i]), held = s.held[i], b = target(s, i, p_.dissipation);
-      const double end = b > beta ? (beta >= held ? 1.0 : held) : (beta > held ? held : 0.0);
-      chi[i] = s.sign[i] * end;
+      chi[i] = s.sign[i] * (target(s, i, p_.dissipation) > beta[i] ? cl.hi[i] : cl.lo[i]);
       ++moved;
     }
     if (2 * moved < n) return;
