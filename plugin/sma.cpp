@@ -530,6 +530,8 @@ long StepOperatorsSet(long const& handle, Matrice_Creuse<double>* const& B, Matr
     p.load = ToEigen(B);
     p.latent = ToEigen(Q);
     p.interp = ToEigen(interp);
+    static std::uint64_t operatorsSet = 0;  // names the operators of every slot: each call a new value
+    p.operators_version = ++operatorsSet;
     return slot;
   });
 }

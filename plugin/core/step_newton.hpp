@@ -117,6 +117,16 @@ struct StepProblem {
   // value whenever either changes (the glue: a counter over all refactorisations); 0: unknown,
   // no contact solve is reused (StepSolver::contact_solve).
   std::uint64_t mechanics_version = 0;
+  // Names latent, interp and load as they are now, the same way (the glue: a counter over
+  // StepOperatorsSet's calls); 0: unknown, what is derived from them is made again at each step.
+  std::uint64_t operators_version = 0;
+  // interp by rows (T at a point, row by row: evaluate's and the products' T at the points), made
+  // once per operators_version (a conversion of the whole matrix at every step otherwise).
+  struct OperatorCache {
+    std::uint64_t version = 0;
+    Eigen::SparseMatrix<double, Eigen::RowMajor, int> interp_rows;
+  };
+  mutable OperatorCache operator_cache;
   // The last frictionless contact solve of a state without fraction that kept its warm start
   // (its input reactions solve it): the same load, gap, settings and reactions give the same
   // displacement, which a tail step then takes without a back-solve.
@@ -490,9 +500,25 @@ class StepSolver {
     s.T.resize(nodes);
     heat_solve(rhs, s.T);
     // T at the points (interp T), the law's coefficients there.
+    // (row by row: each sum takes its terms in increasing column order from +0, skipping the
+    // zero temperatures, as the column-by-column product did: the same bits, a third of the work)
     Eigen::VectorXd& Tq = work_.points;
-    Tq.setZero(n);
-    step_detail::add_scaled_columns(p_.interp, 1.0, [&](Eigen::Index j) { return s.T[j]; }, Tq.data());
+    Tq.resize(n);
+    {
+      const RowMajorMatrix& rows = interp_by_rows();
+      const int* const outer = rows.outerIndexPtr();
+      const int* const inner = rows.innerIndexPtr();
+      const double* const value = rows.valuePtr();
+      const double* const T = s.T.data();
+      for (Eigen::Index i = 0; i < n; ++i) {
+        double t = 0.0;
+        for (int e = outer[i]; e < outer[i + 1]; ++e) {
+          const double x = T[inner[e]];
+          if (x != 0.0) t += (1.0 * value[e]) * x;
+        }
+        Tq[i] = t;
+      }
+    }
     s.alpha.resize(n);
     s.c.resize(n);
     s.q.resize(n);
@@ -1552,13 +1578,18 @@ class StepSolver {
     Eigen::VectorXd rhs, points;                      // evaluate's heat load and T at the points
   };
 
-  // p_.interp by rows (T at a point, row by row), made at its first use in the step.
+  // p_.interp by rows (T at a point, row by row): the problem's copy while operators_version
+  // names it, else made at its first use in the step.
   const RowMajorMatrix& interp_by_rows() {
-    if (interp_rows_.rows() != p_.interp.rows()) {
-      interp_rows_ = p_.interp;
-      interp_rows_.makeCompressed();
+    StepProblem::OperatorCache& cache = p_.operator_cache;
+    const bool kept = p_.operators_version != 0 && cache.version == p_.operators_version;
+    if (!kept && !interp_rows_made_) {
+      cache.interp_rows = p_.interp;
+      cache.interp_rows.makeCompressed();
+      cache.version = p_.operators_version;
+      interp_rows_made_ = true;
     }
-    return interp_rows_;
+    return cache.interp_rows;
   }
 
   const StepProblem& p_;
@@ -1567,7 +1598,7 @@ class StepSolver {
   // A solve of a block of StepSettings::coarse_points took coarse_after GMRES iterations this step.
   bool hard_large_solve_ = false;
   Workspace work_;
-  RowMajorMatrix interp_rows_;       // p_.interp by rows (interp_by_rows), made at its first use
+  bool interp_rows_made_ = false;    // interp_by_rows made the problem's copy in this step
   std::vector<Eigen::Index> all_;    // 0 .. n-1 (force_derivative's support)
   std::vector<int> column_of_row_;   // contact row -> column of the Delassus factor's Y (-1: none)
 };

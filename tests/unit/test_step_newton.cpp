@@ -753,6 +753,54 @@ TEST(StepNewton, ContactMemoGivesTheSolveItStandsFor) {
   EXPECT_LE((u5 - u1).lpNorm<Eigen::Infinity>(), 1e-12 * u1.lpNorm<Eigen::Infinity>());
 }
 
+TEST(StepNewton, OperatorCacheFollowsTheOperatorsVersion) {
+  // A transforming step of the radial run solved with the interpolation by rows kept in the
+  // problem (an operators version given): the same bits as without (version 0, made again at
+  // every step), on the first solve and on the next one, which takes the kept copy; a new
+  // interpolation under a new version is taken up, giving the bits of a problem that never kept one.
+  RadialSleeve rs;
+  rs.build();
+  const RunState state = first_state(rs, [](const Eigen::VectorXd& chi, const Eigen::VectorXd&) {
+    return partly_transformed(chi) > 0;
+  });
+  ASSERT_TRUE(state.found);
+  const int n = rs.nr + 1;
+  auto solve = [&](const sma::StepProblem& p, Eigen::VectorXd& chi, Eigen::VectorXd& T) {
+    Eigen::VectorXd r = Eigen::VectorXd::Zero(2), g = Eigen::VectorXd::Zero(1), u(n);
+    chi = p.chi_start;
+    T.resize(n);
+    const sma::StepResult res = sma::solve_fraction_step(p, sma::StepSettings{}, chi, r, g, T, u);
+    EXPECT_TRUE(res.converged);
+    return res.products;
+  };
+  Eigen::VectorXd chi0, T0, chi1, T1, chi2, T2;
+  const sma::StepProblem plain = state.problem;  // operators_version 0
+  const int products = solve(plain, chi0, T0);
+  sma::StepProblem kept = state.problem;
+  kept.operators_version = 5;
+  EXPECT_EQ(solve(kept, chi1, T1), products);
+  EXPECT_EQ(kept.operator_cache.version, 5u);
+  EXPECT_EQ(solve(kept, chi2, T2), products);  // from the kept copy
+  EXPECT_EQ(chi1, chi0);
+  EXPECT_EQ(T1, T0);
+  EXPECT_EQ(chi2, chi0);
+  EXPECT_EQ(T2, T0);
+  // Another interpolation (T at a point weighted 1/4, 3/4 between its nodes) under a new version.
+  sma::SparseMatrix other = kept.interp;
+  for (int k = 0; k < other.outerSize(); ++k)
+    for (sma::SparseMatrix::InnerIterator it(other, k); it; ++it) it.valueRef() = it.row() == it.col() ? 0.25 : 0.75;
+  sma::StepProblem plain_other = state.problem;
+  plain_other.interp = other;
+  Eigen::VectorXd chi3, T3, chi4, T4;
+  solve(plain_other, chi3, T3);
+  kept.interp = other;
+  kept.operators_version = 6;
+  solve(kept, chi4, T4);
+  EXPECT_EQ(chi4, chi3);
+  EXPECT_EQ(T4, T3);
+  EXPECT_NE(chi3, chi0);
+}
+
 TEST(StepNewton, CreepingGradientStepsHandOverToTheDenseMove) {
   // The radial sleeve at the paper's a with 1 s steps and the snap trial off: some iterations
   // take the gradient step after Newton rounds that cost more products than their block's
