@@ -135,7 +135,7 @@ def doc_time(r, w):
           "replaced at most once a second: a rename over a file costs ext4 a data flush).")
     w(f"- **FreeFEM's clock()**: FreeFEM reads the process CPU time, a system call, twice per statement of "
       f"every block (for a display off by default). tools/ff preloads plugin/fastclock.c, a clock() read "
-      f"through the vDSO: {v['stock_clock']['loop_seconds']:.2f} s -> {r['sleeve_circular_1500_loop_seconds']:.2f} s "
+      f"through the vDSO (FreeFEM's own statement and product timers: the coarse clock, the kernel's last tick): {v['stock_clock']['loop_seconds']:.2f} s -> {r['sleeve_circular_1500_loop_seconds']:.2f} s "
       f"of loop, outputs byte-identical (tests/fastclock_test.py).")
     ph = r["sleeve_circular_1500_phases"]
     w(f"- **The floor**: one stiffness and one heat back-solve per step, "
