@@ -128,6 +128,11 @@
 //       (plugin/core/heat_theta.hpp: the script's arithmetic and order, FreeFEM's product)
 //   long SameValues(real[] a, real[] b)   1 when b has a's size and every a_i - b_i is 0 (a NaN:
 //       0), else 0 (heat.idp's HeatPrepare)
+//   real HeatBalanceResidual(real[] capacity, real[] T1, real[] T0, real entered, real released,
+//                            real dissipated)   a step's discrete heat balance (time-loop.idp):
+//       |stored - budget| / scale, stored = capacity' (T1 - T0), budget = entered + released +
+//       dissipated, scale = max(|stored|, |entered| + |released| + dissipated); 0 when the scale is
+//       0 (plugin/core/heat_balance.hpp)
 //   long ContactHeatExchange(real[int,int] contactTable, real[] r, int m, real gContact, real gPipe,
 //                            real Tpipe, real[] g, real[] Text)   the sleeve's default heat condition
 //       at its m contact nodes (edp/problems/sleeve/time-loop.idp): g = gContact where the node
@@ -187,6 +192,7 @@
 #include "core/step_newton.hpp"
 #include "core/step_record.hpp"
 #include "core/heat_theta.hpp"
+#include "core/heat_balance.hpp"
 
 using namespace Fem2D;
 
@@ -774,6 +780,17 @@ long SameValues(KN<double>* const& a, KN<double>* const& b) {
   return guarded("SameValues", [&] { return sma::same_values(cview(a), cview(b)) ? 1L : 0L; });
 }
 
+double HeatBalanceResidual(KN<double>* const& capacity, KN<double>* const& T1, KN<double>* const& T0,
+                           double const& entered, double const& released, double const& dissipated) {
+  return guarded("HeatBalanceResidual", [&] {
+    const sma::span<const double> c = cview(capacity), t1 = cview(T1), t0 = cview(T0);
+    if (t1.size() != c.size() || t0.size() != c.size())
+      throw std::invalid_argument("capacity, T1 and T0 need one value per heat node");
+    const double stored = sma::heat_balance::stored(c.begin(), t1.begin(), t0.begin(), c.size());
+    return sma::heat_balance::relative_residual(stored, entered, released, dissipated);
+  });
+}
+
 // Projected SOR on the full stiffness system; the matrix is read in CSR form (a row-major copy
 // through ToEigen: O(nnz) per call).
 long PsorFull(Matrice_Creuse<double>* const& K, KN<double>* const& b, KNM<double>* const& contact,
@@ -821,7 +838,7 @@ long RoundToFloat(KN<double>* const& x) {
   return changed;
 }
 
-double SmaPluginVersion() { return 20.0; }
+double SmaPluginVersion() { return 21.0; }
 
 // FreeFEM's time() has a resolution of one second and clock() counts CPU time; timings of the
 // scenes are wall-clock seconds from a monotonic clock.
@@ -1172,6 +1189,8 @@ static void Load_Init() {
              new OneOperator7_<long, long, Matrice_Creuse<double>*, A, A, A, A, A>(HeatOperatorsSet));
   Global.Add("HeatBoundarySet", "(", new OneOperator5_<long, long, A, A, A, A>(HeatBoundarySet));
   Global.Add("SameValues", "(", new OneOperator2_<long, A, A>(SameValues));
+  Global.Add("HeatBalanceResidual", "(",
+             new OneOperator6_<double, A, A, A, double, double, double>(HeatBalanceResidual));
   Global.Add("HeatThetaRhs", "(", new OneOperator5_<long, A, A, A, A, A>(HeatThetaRhs));
   Global.Add("HeatThetaEnergy", "(", new OneOperator6_<long, A, A, A, A, A, A>(HeatThetaEnergy));
   Global.Add("StepSolveFraction", "(",
