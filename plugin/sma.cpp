@@ -145,7 +145,7 @@
 //   long ProbeRowWrite(ofstream f, real[] [step, time, pipeElastic], real[] [node, vertex, ...],
 //                      real[] T, real[] pressure, real[] u, real[int,int] contactTable,
 //                      real[] pipeNormalMotion)   points.csv's row (sleeve-2d.idp) and its line end
-//       (flushed, as endl): step, time, then per probe point (a contact node and its vertex) the
+//       (not flushed: the caller's CheckWritten flushes): step, time, then per probe point (a contact node and its vertex) the
 //       temperature, the pressure and the gap ((nx ux + ny uy) - motion) + gap0, the table's
 //       columns 1-3 (motion only when pipeElastic is not 0; contact_history.hpp probe_columns)
 //   long VtuWrite(string path, mesh Th, string vectorName, real[] vector, string scalarName,
@@ -1147,7 +1147,6 @@ long ProbeRowWrite(std::ostream* const& f, KN<double>* const& head, KN<double>* 
     std::string text = sma::output::csv_row(row.data(), row.size(), CsvPrecision(f));
     text += '\n';
     f->write(text.data(), (std::streamsize)text.size());
-    f->flush();
     return 0L;
   });
 }
