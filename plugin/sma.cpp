@@ -173,6 +173,7 @@
 #include <sstream>
 #include <string>
 #include <sys/resource.h>
+#include <unordered_map>
 #include <unistd.h>
 #include <vector>
 
@@ -1097,9 +1098,16 @@ int CsvPrecision(std::ostream* f) {
     throw std::invalid_argument("the stream must print reals in the default format (no fixed, scientific or showpoint)");
   return static_cast<int>(f->precision());
 }
+// The rows' formatters by stream (a row's text does not depend on which one formats it: each
+// checks its kept texts against the values' bits and the precision), one per stream a run writes
+// rows to, so that each keeps the columns of its own file's last row.
+sma::output::CsvRowFormatter& RowFormatter(const std::ostream* f) {
+  static std::unordered_map<const std::ostream*, sma::output::CsvRowFormatter> formatters;
+  return formatters[f];
+}
 long CsvWriteRow(std::ostream* const& f, KN<double>* const& values) {
   return guarded("CsvWriteRow", [&] {
-    const std::string row = sma::output::csv_row(values->N() ? &(*values)[0] : nullptr, values->N(), CsvPrecision(f));
+    const std::string row = RowFormatter(f).row(values->N() ? &(*values)[0] : nullptr, values->N(), CsvPrecision(f));
     f->write(row.data(), (std::streamsize)row.size());
     return 0L;
   });
@@ -1144,7 +1152,7 @@ long ProbeRowWrite(std::ostream* const& f, KN<double>* const& head, KN<double>* 
     if (count > 0)
       sma::contact_history::probe_columns(points.data(), count, &(*T)[0], &(*pressure)[0], &(*u)[0],
                                           elastic ? &(*pipeNormalMotion)[0] : nullptr, &row[2]);
-    std::string text = sma::output::csv_row(row.data(), row.size(), CsvPrecision(f));
+    std::string text = RowFormatter(f).row(row.data(), row.size(), CsvPrecision(f));
     text += '\n';
     f->write(text.data(), (std::streamsize)text.size());
     return 0L;

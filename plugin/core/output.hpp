@@ -273,6 +273,44 @@ inline void append_general(double x, int precision, std::string& out) {
   out.append(buffer, r.ptr);
 }
 
+// The same rows, each column's text kept from the row before: a value with the same bits at the
+// same precision has the same text (to_chars is a function of both), so a column that stands still
+// (a run's tail: the pressures, fractions and counts of a step that moved nothing) is copied, not
+// formatted again. The text is csv_row's whatever the rows before.
+class CsvRowFormatter {
+ public:
+  std::string row(const double* values, std::size_t n, int precision) {
+    if (columns_.size() < n) columns_.resize(n);
+    std::string out;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (i > 0) out += ',';
+      Column& c = columns_[i];
+      std::uint64_t bits;
+      std::memcpy(&bits, &values[i], sizeof bits);
+      if (!c.set || c.bits != bits || c.precision != precision) {
+        c.text.clear();
+        append_general(values[i], precision, c.text);
+        c.bits = bits, c.precision = precision, c.set = true;
+        ++formatted_;
+      }
+      out += c.text;
+    }
+    return out;
+  }
+  // How many values it formatted (the others' texts were kept).
+  std::size_t formatted() const { return formatted_; }
+
+ private:
+  struct Column {
+    bool set = false;
+    std::uint64_t bits = 0;
+    int precision = 0;
+    std::string text;
+  };
+  std::vector<Column> columns_;
+  std::size_t formatted_ = 0;
+};
+
 // values[0], values[1], ... separated by commas (no line end).
 inline std::string csv_row(const double* values, std::size_t n, int precision) {
   std::string out;

@@ -5,6 +5,8 @@
 // checked by the scenes' runs (the frames of results/sleeve-circular are unchanged by the switch).
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -200,6 +202,32 @@ TEST(Output, CsvRowSeparatesByCommasWithoutLineEnd) {
   const double row[] = {1, 0.1, -2.5e-7, 1500};
   EXPECT_EQ(out::csv_row(row, 4, 12), "1,0.1,-2.5e-07,1500");
   EXPECT_EQ(out::csv_row(row, 0, 12), "");
+}
+
+// The row formatter keeps each column's text for its next row: every row must read as csv_row's,
+// whatever came before (a column that stands, one that changes, a zero's sign, a NaN, a row of
+// another length, another precision).
+TEST(Output, CsvRowFormatterGivesCsvRowsText) {
+  std::mt19937 random(12);
+  std::uniform_int_distribution<int> pick(0, 5);
+  const double values[] = {1500, 0.1, -2.5e-7, 0.0, -0.0, std::nan(""), 1.0 / 3.0, 156444166.454};
+  out::CsvRowFormatter formatter;
+  std::vector<double> row(6, 0.0);
+  std::size_t cells = 0;
+  for (int r = 0; r < 400; ++r) {
+    const std::size_t n = r % 50 == 49 ? 3 : row.size();
+    for (std::size_t i = 0; i < n; ++i)
+      if (pick(random) == 0) row[i] = values[std::uniform_int_distribution<int>(0, 7)(random)];
+    const int precision = r % 100 == 99 ? 6 : 12;
+    ASSERT_EQ(formatter.row(row.data(), n, precision), out::csv_row(row.data(), n, precision)) << "row " << r;
+    cells += n;
+  }
+  // (a sixth of the values change a row: most texts were kept, not formatted again)
+  EXPECT_LT(formatter.formatted(), cells / 3);
+  const double zeros[] = {0.0, -0.0};
+  EXPECT_EQ(formatter.row(zeros, 2, 12), "0,-0");
+  const double swapped[] = {-0.0, 0.0};
+  EXPECT_EQ(formatter.row(swapped, 2, 12), "-0,0");
 }
 
 // The output fields' stresses: on a linear displacement u = (a x + b y, c x + d y) every triangle
