@@ -120,8 +120,8 @@ struct StepProblem {
   // Names latent, interp and load as they are now, the same way (the glue: a counter over
   // StepOperatorsSet's calls); 0: unknown, what is derived from them is made again at each step.
   std::uint64_t operators_version = 0;
-  // interp by rows (T at a point, row by row: evaluate's and the products' T at the points), made
-  // once per operators_version (a conversion of the whole matrix at every step otherwise).
+  // interp by rows (T at a point, row by row: the products' T at the points), made once per
+  // operators_version (a conversion of the whole matrix at every step that takes a product otherwise).
   struct OperatorCache {
     std::uint64_t version = 0;
     Eigen::SparseMatrix<double, Eigen::RowMajor, int> interp_rows;
@@ -500,25 +500,9 @@ class StepSolver {
     s.T.resize(nodes);
     heat_solve(rhs, s.T);
     // T at the points (interp T), the law's coefficients there.
-    // (row by row: each sum takes its terms in increasing column order from +0, skipping the
-    // zero temperatures, as the column-by-column product did: the same bits, a third of the work)
     Eigen::VectorXd& Tq = work_.points;
-    Tq.resize(n);
-    {
-      const RowMajorMatrix& rows = interp_by_rows();
-      const int* const outer = rows.outerIndexPtr();
-      const int* const inner = rows.innerIndexPtr();
-      const double* const value = rows.valuePtr();
-      const double* const T = s.T.data();
-      for (Eigen::Index i = 0; i < n; ++i) {
-        double t = 0.0;
-        for (int e = outer[i]; e < outer[i + 1]; ++e) {
-          const double x = T[inner[e]];
-          if (x != 0.0) t += (1.0 * value[e]) * x;
-        }
-        Tq[i] = t;
-      }
-    }
+    Tq.setZero(n);
+    step_detail::add_scaled_columns(p_.interp, 1.0, [&](Eigen::Index j) { return s.T[j]; }, Tq.data());
     s.alpha.resize(n);
     s.c.resize(n);
     s.q.resize(n);
