@@ -361,6 +361,12 @@ long PsorCondensed(KNM<double>* const& W, KN<double>* const& q, KN<double>* cons
   });
 }
 
+// A value no earlier call returned (the versions of the factor slots and the step operators).
+std::uint64_t NewVersion() {
+  static std::uint64_t counter = 0;
+  return ++counter;
+}
+
 // The factorisations of SpdFactorize, by slot, each with the contact problem SpdDelassus formed
 // on it: glue state, as the step slots and VtuWrite's mesh text are (the core holds none). They
 // live until the process ends.
@@ -370,10 +376,7 @@ struct FactorSlot {
   // Renewed at every change of the factor or its contact operator, unique over all slots: the
   // step solver's contact memo (StepProblem::mechanics_version) holds for one version only.
   std::uint64_t version = 0;
-  void changed() {
-    static std::uint64_t counter = 0;
-    version = ++counter;
-  }
+  void changed() { version = NewVersion(); }
 };
 std::vector<std::unique_ptr<FactorSlot>>& Factors() {
   static std::vector<std::unique_ptr<FactorSlot>> factors;
@@ -537,8 +540,7 @@ long StepOperatorsSet(long const& handle, Matrice_Creuse<double>* const& B, Matr
     p.load = ToEigen(B);
     p.latent = ToEigen(Q);
     p.interp = ToEigen(interp);
-    static std::uint64_t operatorsSet = 0;  // names the operators of every slot: each call a new value
-    p.operators_version = ++operatorsSet;
+    p.operators_version = NewVersion();
     return slot;
   });
 }
@@ -1117,9 +1119,10 @@ long CsvWriteRows(std::ostream* const& f, KNM<double>* const& table) {
     const int precision = CsvPrecision(f);
     std::vector<double> row(table->M());
     std::string text;
+    sma::output::CsvRowFormatter formatter;  // (a column's repeated values formatted once)
     for (long i = 0; i < table->N(); ++i) {
       for (long j = 0; j < table->M(); ++j) row[j] = (*table)(i, j);
-      text += sma::output::csv_row(row.data(), row.size(), precision);
+      text += formatter.row(row.data(), row.size(), precision);
       text += '\n';
     }
     f->write(text.data(), (std::streamsize)text.size());

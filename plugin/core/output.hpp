@@ -273,10 +273,11 @@ inline void append_general(double x, int precision, std::string& out) {
   out.append(buffer, r.ptr);
 }
 
-// The same rows, each column's text kept from the row before: a value with the same bits at the
-// same precision has the same text (to_chars is a function of both), so a column that stands still
-// (a run's tail: the pressures, fractions and counts of a step that moved nothing) is copied, not
-// formatted again. The text is csv_row's whatever the rows before.
+// Rows of values separated by commas (no line end), each column's text kept from the row before: a
+// value with the same bits at the same precision has the same text (to_chars is a function of
+// both), so a column that stands still (a run's tail: the pressures, fractions and counts of a step
+// that moved nothing) is copied, not formatted again. A row's text does not depend on the rows
+// before (csv_row below: a new formatter's first row).
 class CsvRowFormatter {
  public:
   std::string row(const double* values, std::size_t n, int precision) {
@@ -311,14 +312,9 @@ class CsvRowFormatter {
   std::size_t formatted_ = 0;
 };
 
-// values[0], values[1], ... separated by commas (no line end).
+// values[0], values[1], ... separated by commas (no line end): a formatter's first row.
 inline std::string csv_row(const double* values, std::size_t n, int precision) {
-  std::string out;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (i > 0) out += ',';
-    append_general(values[i], precision, out);
-  }
-  return out;
+  return CsvRowFormatter().row(values, n, precision);
 }
 
 }  // namespace sma::output
