@@ -21,6 +21,9 @@ Keys:
   l1_transient  the same over [0, t_A], t_A the time from which the reference is austenite for
          good (the end of the story: zero, linear, reversion); over [0, tEnd] the long constant
          tail (about 135 of the sleeves' 150 s) dilutes the relative error
+  l1_reversion  the same over the reversion window [t_R, t_A], t_R the reference's last step
+         before its ring, martensite since its first contact, starts to turn back (where the
+         force rises steeply and a whole-run metric hides the error); None without one
   linf   max |p - p_ref| / max |p_ref| (on the union grid, where a piecewise linear maximum is)
   peak   relative error of the highest pressure
   first_contact_dT   T_inner (K) at the first step in contact minus the reference's
@@ -85,9 +88,21 @@ def austenite_time(h):
     return h["t"][last + 1] if last + 1 < len(h["t"]) else None
 
 
-def l1_errors(ta, pa, tb, pb, t_end):
-    """(int |a - b| dt, int |b| dt) over [0, t_end], and the union grid with a and b on it."""
-    grid = sorted({t for t in ta + tb if t <= t_end} | {t_end})
+def reversion_time(h):
+    """Time of the last step before the ring, martensite after its first contact, starts to turn
+    back to austenite (None if it never does, or no such columns): the reversion window's start."""
+    if "fraction_austenite" not in h or "contact_nodes" not in h:
+        return None
+    touched = first_index(h["contact_nodes"], lambda v: v > 0)
+    if touched is None:
+        return None
+    i = first_index(range(touched, len(h["t"])), lambda k: h["fraction_austenite"][k] > 0)
+    return h["t"][touched + i - 1] if i is not None and touched + i > 0 else None
+
+
+def l1_errors(ta, pa, tb, pb, t_end, t_start=0.0):
+    """(int |a - b| dt, int |b| dt) over [t_start, t_end], and the union grid with a and b on it."""
+    grid = sorted({t for t in ta + tb if t_start <= t <= t_end} | {t_start, t_end})
     da = [interpolate(ta, pa, t) for t in grid]
     db = [interpolate(tb, pb, t) for t in grid]
     err = ref_norm = 0.0
@@ -105,6 +120,12 @@ def curve_error(history_csv, reference_csv):
     err, ref_norm, grid, da, db = l1_errors(ta, pa, tb, pb, t_end)
     t_transient = min(austenite_time(ref) or t_end, t_end)
     err_tr, ref_tr, _, _, _ = l1_errors(ta, pa, tb, pb, t_transient)
+    t_rev = reversion_time(ref)
+    if t_rev is not None and t_rev < t_transient:
+        err_w, ref_w, _, _, _ = l1_errors(ta, pa, tb, pb, t_transient, t_rev)
+        window = {"l1_reversion": err_w / ref_w if ref_w > 0 else float("nan"), "reversion_start": t_rev}
+    else:
+        window = {"l1_reversion": None, "reversion_start": None}
     ref_max = max(abs(v) for v in db)
     result = {
         "l1": err / ref_norm if ref_norm > 0 else float("nan"),
@@ -116,6 +137,7 @@ def curve_error(history_csv, reference_csv):
         "peak": abs(max(da) - max(db)) / max(db) if max(db) > 0 else float("nan"),
         "tend": t_end, "steps": len(h["t"]), "reference_steps": len(ref["t"]),
     }
+    result.update(window)
     if "T_inner_mean" in h and "T_inner_mean" in ref:
         t0 = max(h["t"][0], ref["t"][0])
         tgrid = [t for t in grid if t >= t0]
