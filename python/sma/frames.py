@@ -15,7 +15,7 @@ from .results_io import ResultsError, read_csv as _read_columns
 # The SI unit of each column the scenes write (docs/outputs.md: history.csv, points.csv,
 # contact-final.csv, fields-<instant>.csv; sleeve-radial's history.csv and fields-<instant>.csv).
 UNITS = {
-    "t": "s", "T_inner_mean": "K", "T_min": "K", "T_max": "K",
+    "t": "s", "dt": "s", "T_inner_mean": "K", "T_min": "K", "T_max": "K",
     "pressure_mean": "Pa", "pressure_min": "Pa", "pressure_max": "Pa",
     "u_inner": "m", "gap_inner": "m", "reaction_per_radian": "N/m",
     "x": "m", "y": "m", "normal_force": "N/m", "tangential_force": "N/m", "tributary_length": "m",
