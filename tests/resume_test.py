@@ -123,7 +123,9 @@ def main():
                   f"(differ: {differ}), its summary.json too but for the timing "
                   f"({'equal' if sa == sb else 'DIFFERS'}), resumed_from_step {resumed_from} (100)")
             with open(os.path.join(full, "history.csv")) as f:
-                temperatures[scene] = [line.split(",")[2] for line in f][1:]
+                lines = [line.split(",") for line in f]
+                column = lines[0].index("T_inner_mean")
+                temperatures[scene] = [words[column] for words in lines[1:]]
             measured.append({"scene": scene, "files": count, "differ": differ, "summary_equal": sa == sb,
                              "resumed_from_step": resumed_from, "rows_at_stop": rows})
             for folder in (plain, full, stopped):

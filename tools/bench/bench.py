@@ -27,6 +27,8 @@ summary.json with the headline figures) and docs/benchmarks.md with its PNGs in 
   7b. sleeve-axisymmetric's pull-out force under refinement: order, time to 1 %       pullout.py
   8. sleeve-radial against numpy: the scene against oracles/radial_numpy.py (the same scheme
      written again in vectorised numpy)                                           against_numpy.py
+  9. time steps chosen by the error (-tol) against fixed steps at the paper's scale: steps, loop
+     time, the time error and each run's own estimate (docs/benchmarks/time-steps.md) time_steps.py
 The oracles (tools/bench/oracles: closed forms, the curve metric, the scheme in numpy, GetFEM) are
 independent of the code they check: they import nothing of python/sma.
 """
@@ -45,6 +47,7 @@ import report
 import ring_lame
 import scaling
 import study
+import time_steps
 import work_precision
 from common import OUT, QUICK, machine
 
@@ -52,7 +55,8 @@ from common import OUT, QUICK, machine
 ALONE = {"kernels": kernels.measure, "psor": psor.measure, "ring-lame": ring_lame.measure,
          "scaling": lambda results: results.update(scaling=scaling.scaling(OUT, QUICK)),
          "pullout": lambda results: results.update(pullout=pullout.measure(OUT, QUICK)),
-         "numpy": lambda results: results.update(radial_numpy=against_numpy.radial_against_numpy())}
+         "numpy": lambda results: results.update(radial_numpy=against_numpy.radial_against_numpy()),
+         "time-steps": lambda results: time_steps.write_doc(time_steps.measure(results))}
 
 
 def main():
@@ -88,6 +92,7 @@ def main():
     results["scaling"] = scaling.scaling(OUT, QUICK)
     results["pullout"] = pullout.measure(OUT, QUICK)
     results["radial_numpy"] = against_numpy.radial_against_numpy()
+    time_steps.write_doc(time_steps.measure(results))
 
     results["bench_wall_seconds"] = time.perf_counter() - bench_start
     with open(os.path.join(OUT, "summary.json.partial"), "w") as f:

@@ -37,6 +37,9 @@ def write_doc(r, plt):
       f"scale); at the default, the paper's scale, sleeve-circular's step solver does about 3 times the "
       f"products (3010 against 1077)." + (" **Quick mode: small grid.**" if r["quick"] else ""))
     w("")
+    w("Time steps chosen by the error (`-tol`) against fixed steps, at the paper's scale, in the same run: "
+      "[benchmarks/time-steps.md](benchmarks/time-steps.md).")
+    w("")
     w("## Goals")
     w("")
     w("| goal | measured | met |")

@@ -1,0 +1,107 @@
+#!/usr/bin/python3
+"""Time steps chosen by the error (-tol) against fixed steps, at the paper's scale, in one run.
+
+For sleeve-circular (default mesh) and sleeve-radial (nr 160): a reference of the time
+discretisation on the same mesh (fixed steps, 10 times the default's), then fixed steps (150,
+300, the default) and -tol 3e-3, 1e-3, 3e-4; for each the steps (rejected, retried), the loop's
+wall time (summary.json wall_seconds) and its ratio to the default's in this run, the error of the
+force curve against the reference (tools/bench/oracles/curve_error.py: relative L1 over the run,
+the transient and the reversion window) and the run's own estimate (time_error_estimate) with its
+effectivity (estimate over measured). The mesh's error is not in these figures (docs/reference.md).
+
+    tools/bench/time_steps.py            writes results/bench/time-steps.json and
+                                         docs/benchmarks/time-steps.md
+Also a section of make bench (tools/bench/bench.py).
+"""
+import json
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from common import OUT, ROOT, run  # noqa: E402
+from curve_error import curve_error  # noqa: E402
+
+DOC = os.path.join(ROOT, "docs", "benchmarks", "time-steps.md")
+SCENES = [("sleeve-circular", "edp/scenes/sleeve-circular.edp", 1500, ["-vtkevery", 0]),
+          ("sleeve-radial", "edp/scenes/sleeve-radial.edp", 1000, [])]
+CASES = [("-steps 150", ["-steps", 150]), ("-steps 300", ["-steps", 300]), ("default", []),
+         ("-tol 3e-3", ["-tol", 3e-3]), ("-tol 1e-3", ["-tol", 1e-3]), ("-tol 3e-4", ["-tol", 3e-4])]
+
+
+def measure(results):
+    table = {}
+    for name, script, default_steps, extra in SCENES:
+        base = os.path.join(OUT, "time-steps", name)
+        ref_out = os.path.join(base, "reference")
+        _, ref_summary, error = run(script, ref_out, "-scale", "paper", "-quiet", 1, "-steps", 10 * default_steps,
+                                    *extra)
+        if ref_summary is None:
+            raise RuntimeError(f"time steps: {name}'s reference failed: {error}")
+        rows = []
+        for label, args in CASES:
+            out = os.path.join(base, label.replace(" ", "").replace("-", "") or "default")
+            _, s, error = run(script, out, "-scale", "paper", "-quiet", 1, *extra, *args, allow_failure=True)
+            if s is None:
+                rows.append({"case": label, "error": error})
+                continue
+            e = curve_error(os.path.join(out, "history.csv"), os.path.join(ref_out, "history.csv"))
+            rows.append({"case": label, "steps": s["n_steps"], "rejected": s["steps_rejected"],
+                         "retried": s["steps_retried"], "loop_seconds": s["wall_seconds"],
+                         "l1": e["l1"], "l1_transient": e["l1_transient"], "l1_reversion": e["l1_reversion"],
+                         "estimate": s["time_error_estimate"], "estimate_transient": s["time_error_estimate_transient"],
+                         "effectivity": s["time_error_estimate"] / e["l1"] if e["l1"] > 0 else None,
+                         "effectivity_transient": (s["time_error_estimate_transient"] / e["l1_transient"]
+                                                   if e["l1_transient"] > 0 else None)})
+        default = next(r for r in rows if r["case"] == "default")
+        for r in rows:
+            if "loop_seconds" in r:
+                r["loop_over_default"] = r["loop_seconds"] / default["loop_seconds"]
+        table[name] = {"reference_steps": 10 * default_steps, "rows": rows}
+    results["time_steps"] = table
+    return table
+
+
+def fmt(x, spec=".2e"):
+    return "-" if x is None else format(x, spec)
+
+
+def write_doc(table):
+    lines = ["# Time steps chosen by the error against fixed steps", "",
+             "Written by `tools/bench/time_steps.py` (its docstring states the method); numbers from that run, "
+             "at the paper's scale. Errors: relative L1 in time of the mean contact pressure against the same "
+             "scene with 10 times the default's fixed steps (the time discretisation's error only, not the "
+             "mesh's); the estimate is the run's own summary.json `time_error_estimate` (over the run) and "
+             "`_transient`; effectivity = estimate / measured. Loop: summary.json `wall_seconds`, and its "
+             "ratio to the default run's in this run.", ""]
+    for name, data in table.items():
+        lines += [f"## {name} (reference: {data['reference_steps']} fixed steps)", "",
+                  "| case | steps | rejected | retried | loop (s) | loop / default | L1 run | estimate | "
+                  "effectivity | L1 transient | estimate | effectivity | L1 reversion window |",
+                  "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+        for r in data["rows"]:
+            if "error" in r:
+                lines.append(f"| {r['case']} | failed: {r['error'][:120]} |" + " |" * 11)
+                continue
+            lines.append(f"| {r['case']} | {r['steps']} | {r['rejected']} | {r['retried']} | {r['loop_seconds']:.3f} | "
+                         f"{r['loop_over_default']:.2f} | {fmt(r['l1'])} | {fmt(r['estimate'])} | "
+                         f"{fmt(r['effectivity'], '.2f')} | {fmt(r['l1_transient'])} | {fmt(r['estimate_transient'])} | "
+                         f"{fmt(r['effectivity_transient'], '.2f')} | {fmt(r['l1_reversion'])} |")
+        lines.append("")
+    os.makedirs(os.path.dirname(DOC), exist_ok=True)
+    with open(DOC + ".partial", "w") as f:
+        f.write("\n".join(lines))
+    os.replace(DOC + ".partial", DOC)
+
+
+def main():
+    results = {}
+    table = measure(results)
+    os.makedirs(OUT, exist_ok=True)
+    with open(os.path.join(OUT, "time-steps.json"), "w") as f:
+        json.dump(table, f, indent=2, allow_nan=False)
+    write_doc(table)
+    print(f"time steps: results/bench/time-steps.json, {os.path.relpath(DOC, ROOT)}")
+
+
+if __name__ == "__main__":
+    main()
