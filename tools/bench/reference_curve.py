@@ -74,15 +74,6 @@ ONOFF_LEVELS = [40, 80, 160, 320, 640, 1280, 2560]
 QUICK_FRACTION_LEVELS = [20, 40, 80, 160]
 QUICK_ONOFF_LEVELS = [20, 40, 80, 160]
 ORDER_SPREAD = 0.35   # A1
-# --scale paper (the module docstring): 20 nr steps over 80 s, the reduced scale's dt = 4 / nr s.
-PAPER_TEND = 80.0
-PAPER_STEPS_PER_ELEMENT = STEPS_PER_ELEMENT * PAPER_TEND / TEND
-PAPER_FRACTION_LEVELS = [20, 40, 80, 160, 320, 640]
-QUICK_PAPER_FRACTION_LEVELS = [20, 40, 80, 160]
-PAPER_DEFAULTS = [
-    ("sleeve-radial (default: nr 160, 1000 steps over 150 s)", "edp/scenes/sleeve-radial.edp", []),
-    ("sleeve-circular (default mesh, 1500 steps over 150 s)", "edp/scenes/sleeve-circular.edp", ["-vtkevery", 0]),
-]
 # The defaults measured against the reference: (name, script, options).
 DEFAULTS = [
     ("sleeve-radial (default: nr 160, 1000 steps)", "edp/scenes/sleeve-radial.edp", []),
@@ -219,7 +210,8 @@ def main():
     parser.add_argument("--no-defaults", action="store_true", help="skip the defaults' runs")
     opts = parser.parse_args()
     if opts.scale == "paper":
-        return main_paper(opts)
+        import reference_paper  # (tools/bench/reference_paper.py: it imports this module's study)
+        return reference_paper.main_paper(opts)
     opts.doc = opts.doc or os.path.join(ROOT, "docs", "reference.md")
     out = opts.out or os.path.join(ROOT, "results", "reference-quick" if opts.quick else "reference")
     os.makedirs(out, exist_ok=True)
@@ -283,103 +275,6 @@ def main():
         write_doc(opts.doc, summary)
     failed = [name for name in ("A1_ok", "A2_ok", "A3_ok", "onoff_falls_with_h") if not tests[name]]
     print(json.dumps({"order": k, "reference_uncertainty": uncertainty, "tests": tests}, indent=1))
-    if failed:
-        sys.exit(f"reference_curve: assumption(s) failed: {', '.join(failed)} ({os.path.join(out, 'summary.json')})")
-
-
-def main_paper(opts):
-    """--scale paper (the module docstring): the fraction study at the paper's scale over PAPER_TEND,
-    the assumption tests, and the paper-scale defaults over the transient and the reversion window."""
-    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "oracles"))
-    import curve_error  # noqa: E402 (tools/bench/oracles: l1_transient, l1_reversion)
-    out = opts.out or os.path.join(ROOT, "results", "reference-paper-quick" if opts.quick else "reference-paper")
-    doc = opts.doc or os.path.join(ROOT, "docs", "reference-paper.md")
-    os.makedirs(out, exist_ok=True)
-    levels = QUICK_PAPER_FRACTION_LEVELS if opts.quick else PAPER_FRACTION_LEVELS
-    spe = PAPER_STEPS_PER_ELEMENT
-
-    fraction = study(levels, "fraction", out, PAPER_TEND, spe, "paper")
-    finest = fraction[-1][1]
-    grid = np.concatenate(([0.0], finest["t"]))
-    tA = austenite_time(finest)
-    transient = grid[grid <= tA + 1e-12]
-    curves = [on_grid(h, transient) for _, h, _ in fraction]
-    ex = extrapolate(transient, curves)
-    if "failure" in ex:
-        sys.exit(f"reference_curve: {ex['failure']}")
-    reference, previous, rel, tests = ex["reference"], ex["previous"], ex["relative"], ex["tests"]
-    k, uncertainty = ex["order"], ex["uncertainty"]
-    fraction_rows = []
-    for (nr, h, wall), c in zip(fraction, curves):
-        fraction_rows.append({"nr": nr, "steps": int(round(spe * nr)), "wall_seconds": wall,
-                              "error": rel(c - reference)})
-    for row, d in zip(fraction_rows, ex["differences"]):
-        row["difference_to_next"] = d
-    for row, o in zip(fraction_rows, ex["orders"]):
-        row["order_of_differences"] = o
-
-    # The reference as a history (p* on the finest grid up to tA, the finest run's fraction and
-    # contact columns): curve_error.py takes its transient [0, tA] and reversion window [tR, tA] from it.
-    n = len(transient) - 1  # transient[1:] are the finest run's first n steps
-    ref_history = os.path.join(out, "reference-history.csv")
-    with open(ref_history, "w") as f:
-        f.write("# p* of tools/bench/reference_curve.py --scale paper on the finest run's steps up to t_A, "
-                "with that run's fraction_austenite and contact_nodes\n")
-        f.write("t,pressure_mean,fraction_austenite,contact_nodes\n")
-        for i in range(n):
-            f.write(f"{transient[i + 1]:.12g},{reference[i + 1]:.12g},{finest['fraction_austenite'][i]:.12g},"
-                    f"{finest['contact_nodes'][i]:.12g}\n")
-    as_lists = {key: list(map(float, finest[key][:n])) for key in ("t", "fraction_austenite", "contact_nodes")}
-    tR = curve_error.reversion_time(as_lists)
-    # The reference's uncertainty and the levels' errors in the window's norm (the same A2, A3
-    # quantities, integrals over [tR, tA]): informative, not tests.
-    window = {"t_reversion": tR}
-    if tR is not None:
-        w = transient >= tR - 1e-12
-        gw = transient[w]
-        scale_w = l1(gw, reference[w])
-        rel_w = lambda f: l1(gw, f[w]) / scale_w
-        d1, d2 = curves[-1] - curves[-2], curves[-2] - curves[-3]
-        factor = 2.0 ** k
-        mismatch_w = l1(gw, (d2 - factor * d1)[w]) / l1(gw, d2[w])
-        window.update({
-            "A2_shape_mismatch": mismatch_w, "A2_effect_on_reference": mismatch_w * rel_w(d1) / (factor - 1),
-            "A3_reference_change_without_finest": rel_w(previous - reference),
-            "finest_level_error": rel_w(curves[-1] - reference),
-            "level_errors": [rel_w(c - reference) for c in curves]})
-        window["uncertainty"] = max(window["A2_effect_on_reference"], window["A3_reference_change_without_finest"])
-        for row, e in zip(fraction_rows, window["level_errors"]):
-            row["error_reversion"] = e
-
-    defaults = []
-    if not opts.quick and not opts.no_defaults:
-        for name, script, args in PAPER_DEFAULTS:
-            print(f"reference_curve: {name}", flush=True)
-            run_out = os.path.join(out, "default-" + str(len(defaults)))
-            h, wall = run(script, run_out, args, "paper")
-            e = curve_error.curve_error(os.path.join(run_out, "history.csv"), ref_history)
-            defaults.append({"run": name, "command": " ".join(["tools/ff", script, "-quiet", "1", *map(str, args)]),
-                             "wall_seconds": wall, "error": e["l1_transient"], "error_reversion": e["l1_reversion"],
-                             "transient_end": e["transient_end"], "reversion_start": e["reversion_start"],
-                             "steps": len(h["t"])})
-
-    with open(os.path.join(out, "reference.csv"), "w") as f:
-        f.write("# Richardson extrapolation of sleeve-radial -scale paper's mean contact pressure "
-                "(tools/bench/reference_curve.py --scale paper)\n")
-        f.write("t,pressure_reference_Pa,pressure_finest_Pa,pressure_without_finest_Pa\n")
-        for row in zip(transient, reference, curves[-1], previous):
-            f.write(",".join(f"{v:.12g}" for v in row) + "\n")
-    summary = {"scale": "paper", "tend": PAPER_TEND, "t_austenite": tA, "steps_per_element": spe, "order": k,
-               "fraction_levels": fraction_rows, "tests": tests, "reference_uncertainty": uncertainty,
-               "reversion_window": window, "defaults": defaults}
-    with open(os.path.join(out, "summary.json"), "w") as f:
-        json.dump(summary, f, indent=2)
-    if not opts.quick:
-        write_doc_paper(doc, summary)
-    failed = [name for name in ("A1_ok", "A2_ok", "A3_ok") if not tests[name]]
-    print(json.dumps({"order": k, "reference_uncertainty": uncertainty, "tests": tests,
-                      "reversion_window": {key: v for key, v in window.items() if key != "level_errors"},
-                      "defaults": defaults}, indent=1))
     if failed:
         sys.exit(f"reference_curve: assumption(s) failed: {', '.join(failed)} ({os.path.join(out, 'summary.json')})")
 
@@ -454,75 +349,6 @@ def write_doc(path, s):
                   "in the same units).", ""]
     lines += ["The same at the paper's scale, over the whole transient and the reversion window: "
               "[reference-paper.md](reference-paper.md) (`tools/bench/reference_curve.py --scale paper`).", ""]
-    with open(path, "w") as f:
-        f.write("\n".join(lines))
-
-
-def pct3(x):
-    """Three significant digits: the paper scale's errors are hundredths of a percent."""
-    return f"{100 * x:.3g} %" if x is not None else "-"
-
-
-def write_doc_paper(path, s):
-    t, w = s["tests"], s["reversion_window"]
-    lines = [
-        "# An accuracy reference for the force curve at the paper's scale",
-        "",
-        "Written by `tools/bench/reference_curve.py --scale paper` (its docstring states the method); numbers",
-        "from that run. The same Richardson extrapolation and assumption tests as docs/reference.md (the",
-        "reduced scale's), at sleeve-radial's default scale (`-scale paper`: the 0.5 mm interference, a = 2625).",
-        "Error: relative L1 in time of the mean contact pressure over the transient",
-        f"[0, {s['t_austenite']:.3f} s] (tools/bench/oracles/curve_error.py's `l1_transient`) and over the reversion",
-        f"window [{w['t_reversion']:.3f}, {s['t_austenite']:.3f} s] (`l1_reversion`: from the finest run's last step before its"
-        if w.get("t_reversion") is not None else "window (`l1_reversion`: none found;",
-        "ring starts to turn back to austenite, to its austenite time); levels: nr elements,",
-        f"{s['steps_per_element']:g} nr steps over {s['tend']:g} s (dt = {s['tend'] / s['steps_per_element']:g} / nr s, "
-        "the reduced study's dt for each nr).",
-        "",
-        "## The fraction model's levels and the extrapolation",
-        "",
-        "| nr | steps | wall (s) | error against p* | error, reversion window | difference to next | order of differences |",
-        "|---|---|---|---|---|---|---|",
-    ]
-    for r in s["fraction_levels"]:
-        o = r.get("order_of_differences")
-        lines.append(f"| {r['nr']} | {r['steps']} | {r['wall_seconds']:.2f} | {pct3(r['error'])} | "
-                     f"{pct3(r.get('error_reversion'))} | {pct3(r.get('difference_to_next'))} | "
-                     + (f"{o:.2f} |" if o is not None else "- |"))
-    lines += [
-        "",
-        f"Order used: k = {s['order']:.3f} (the last pair). p* = p_N + (p_N - p_N-1) / (2^k - 1).",
-        "",
-        "| assumption | test | measured | holds |",
-        "|---|---|---|---|",
-        f"| A1 asymptotic range | orders of the last three pairs within {ORDER_SPREAD} | "
-        f"{', '.join(f'{o:.3f}' for o in t['A1_orders_last_three'])} (spread {t['A1_spread']:.3f}) | {'yes' if t['A1_ok'] else 'NO'} |",
-        f"| A2 one error shape | its effect on p*, m L1(d_N-1) / (2^k - 1), below the finest level's error | "
-        f"m = {t['A2_shape_mismatch']:.3f}: {pct3(t['A2_effect_on_reference'])} against {pct3(t['A3_finest_level_error'])} | {'yes' if t['A2_ok'] else 'NO'} |",
-        f"| A3 stable extrapolant | the reference without the finest level moves less than the finest level's error | "
-        f"{pct3(t['A3_reference_change_without_finest'])} against {pct3(t['A3_finest_level_error'])} | {'yes' if t['A3_ok'] else 'NO'} |",
-        "",
-        f"The reference's uncertainty (the larger of A2's and A3's): {pct3(s['reference_uncertainty'])} over the transient.",
-    ]
-    if w.get("t_reversion") is not None:
-        lines += [
-            "In the reversion window's norm (the same quantities integrated over the window; informative, "
-            f"not tests): A2's effect {pct3(w['A2_effect_on_reference'])} (m = {w['A2_shape_mismatch']:.3f}), "
-            f"A3's change {pct3(w['A3_reference_change_without_finest'])}, against the finest level's "
-            f"{pct3(w['finest_level_error'])}: uncertainty {pct3(w['uncertainty'])}.",
-        ]
-    lines.append("")
-    if s["defaults"]:
-        lines += ["## The paper-scale defaults against the reference", "",
-                  "| run | command | wall (s) | error against p*, transient | error, reversion window |",
-                  "|---|---|---|---|---|"]
-        for d in s["defaults"]:
-            lines.append(f"| {d['run']} | `{d['command']}` | {d['wall_seconds']:.2f} | {pct3(d['error'])} | "
-                         f"{pct3(d['error_reversion'])} |")
-        lines += ["", f"Each error is known to within the reference's uncertainty ({pct3(s['reference_uncertainty'])} "
-                  "over the transient"
-                  + (f", {pct3(w['uncertainty'])} over the reversion window" if w.get("t_reversion") is not None else "")
-                  + ", in the same units).", ""]
     with open(path, "w") as f:
         f.write("\n".join(lines))
 
