@@ -64,7 +64,11 @@ KEY_FIGURES = [("first_contact_step", "first_contact_step"), ("first_contact_tim
                ("clamp_non_uniformity", "clamp_non_uniformity"),
                ("service_pressure_node_min", "service_pressure_node_min_Pa"),
                ("service_pressure_node_min_angle_deg", "service_pressure_node_min_angle_deg")]
-TRAILING_FIGURES = [("unconverged_loops", "unconverged_loops"), ("wall_seconds", "wall_s")]
+# (a sleeve run's steps, the rejected ones with -tol, and its own estimate of its time error: a
+# sweep of -tol or -steps is a work-precision table)
+TRAILING_FIGURES = [("n_steps", "steps_taken"), ("steps_rejected", "steps_rejected"),
+                    ("time_error_estimate", "time_error_estimate"), ("unconverged_loops", "unconverged_loops"),
+                    ("wall_seconds", "wall_s")]
 STEP_TIMES = {"first_contact_time": "first_contact_step", "austenite_time": "austenite_step"}
 COINCIDE = 1e-3  # relative to a curve's largest |pressure|: curves closer share a legend entry
 ZOOM_PAST_AUSTENITE = 1.25  # the transient panel ends a quarter past the last austenite time
