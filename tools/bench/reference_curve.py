@@ -199,6 +199,27 @@ def study(levels, model, out_root, tend=TEND, steps_per_element=STEPS_PER_ELEMEN
     return runs
 
 
+def fraction_reference(levels, out, tend=TEND, steps_per_element=STEPS_PER_ELEMENT, scale_name="reduced"):
+    """The fraction model's levels, their curves on the finest run's transient grid [0, tA], the
+    extrapolation (extrapolate's dict; exits naming its failure) and the levels' table rows:
+    (levels' runs, transient grid, curves, extrapolation, rows)."""
+    fraction = study(levels, "fraction", out, tend, steps_per_element, scale_name)
+    finest = fraction[-1][1]
+    grid = np.concatenate(([0.0], finest["t"]))
+    transient = grid[grid <= austenite_time(finest) + 1e-12]
+    curves = [on_grid(h, transient) for _, h, _ in fraction]
+    ex = extrapolate(transient, curves)
+    if "failure" in ex:
+        sys.exit(f"reference_curve: {ex['failure']}")
+    rows = [{"nr": nr, "steps": int(round(steps_per_element * nr)), "wall_seconds": wall,
+             "error": ex["relative"](c - ex["reference"])} for (nr, h, wall), c in zip(fraction, curves)]
+    for row, d in zip(rows, ex["differences"]):
+        row["difference_to_next"] = d
+    for row, o in zip(rows, ex["orders"]):
+        row["order_of_differences"] = o
+    return fraction, transient, curves, ex, rows
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--quick", action="store_true", help="coarse levels (nr 20-160), no document (the test)")
@@ -218,25 +239,11 @@ def main():
     fraction_levels = QUICK_FRACTION_LEVELS if opts.quick else FRACTION_LEVELS
     onoff_levels = QUICK_ONOFF_LEVELS if opts.quick else ONOFF_LEVELS
 
-    fraction = study(fraction_levels, "fraction", out)
+    fraction, transient, curves, ex, fraction_rows = fraction_reference(fraction_levels, out)
     finest = fraction[-1][1]
-    grid = np.concatenate(([0.0], finest["t"]))
     tA = austenite_time(finest)
-    transient = grid[grid <= tA + 1e-12]
-    curves = [on_grid(h, transient) for _, h, _ in fraction]
-    ex = extrapolate(transient, curves)
-    if "failure" in ex:
-        sys.exit(f"reference_curve: {ex['failure']}")
     reference, previous, rel, tests = ex["reference"], ex["previous"], ex["relative"], ex["tests"]
     k, uncertainty = ex["order"], ex["uncertainty"]
-    fraction_rows = []
-    for (nr, h, wall), c in zip(fraction, curves):
-        fraction_rows.append({"nr": nr, "steps": int(round(STEPS_PER_ELEMENT * nr)), "wall_seconds": wall,
-                              "error": rel(c - reference)})
-    for row, d in zip(fraction_rows, ex["differences"]):
-        row["difference_to_next"] = d
-    for row, o in zip(fraction_rows, ex["orders"]):
-        row["order_of_differences"] = o
 
     onoff = study(onoff_levels, "onoff", out)
     onoff_rows = []

@@ -6,10 +6,8 @@ import json
 import os
 import sys
 
-import numpy as np
-
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from reference_curve import ROOT, TEND, STEPS_PER_ELEMENT, ORDER_SPREAD, run, on_grid, l1, austenite_time, extrapolate, study  # noqa: E402
+from reference_curve import ROOT, TEND, STEPS_PER_ELEMENT, ORDER_SPREAD, run, l1, austenite_time, fraction_reference  # noqa: E402
 
 # --scale paper (the module docstring): 20 nr steps over 80 s, the reduced scale's dt = 4 / nr s.
 PAPER_TEND = 80.0
@@ -32,25 +30,11 @@ def main_paper(opts):
     levels = QUICK_PAPER_FRACTION_LEVELS if opts.quick else PAPER_FRACTION_LEVELS
     spe = PAPER_STEPS_PER_ELEMENT
 
-    fraction = study(levels, "fraction", out, PAPER_TEND, spe, "paper")
+    fraction, transient, curves, ex, fraction_rows = fraction_reference(levels, out, PAPER_TEND, spe, "paper")
     finest = fraction[-1][1]
-    grid = np.concatenate(([0.0], finest["t"]))
     tA = austenite_time(finest)
-    transient = grid[grid <= tA + 1e-12]
-    curves = [on_grid(h, transient) for _, h, _ in fraction]
-    ex = extrapolate(transient, curves)
-    if "failure" in ex:
-        sys.exit(f"reference_curve: {ex['failure']}")
-    reference, previous, rel, tests = ex["reference"], ex["previous"], ex["relative"], ex["tests"]
+    reference, previous, tests = ex["reference"], ex["previous"], ex["tests"]
     k, uncertainty = ex["order"], ex["uncertainty"]
-    fraction_rows = []
-    for (nr, h, wall), c in zip(fraction, curves):
-        fraction_rows.append({"nr": nr, "steps": int(round(spe * nr)), "wall_seconds": wall,
-                              "error": rel(c - reference)})
-    for row, d in zip(fraction_rows, ex["differences"]):
-        row["difference_to_next"] = d
-    for row, o in zip(fraction_rows, ex["orders"]):
-        row["order_of_differences"] = o
 
     # The reference as a history (p* on the finest grid up to tA, the finest run's fraction and
     # contact columns): curve_error.py takes its transient [0, tA] and reversion window [tR, tA] from it.
@@ -117,11 +101,9 @@ def main_paper(opts):
     if failed:
         sys.exit(f"reference_curve: assumption(s) failed: {', '.join(failed)} ({os.path.join(out, 'summary.json')})")
 
-
 def pct3(x):
     """Three significant digits: the paper scale's errors are hundredths of a percent."""
     return f"{100 * x:.3g} %" if x is not None else "-"
-
 
 def write_doc_paper(path, s):
     t, w = s["tests"], s["reversion_window"]
@@ -185,5 +167,4 @@ def write_doc_paper(path, s):
                   + ", in the same units).", ""]
     with open(path, "w") as f:
         f.write("\n".join(lines))
-
 
