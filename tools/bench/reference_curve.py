@@ -290,8 +290,26 @@ def pct(x):
     return f"{100 * x:.3f} %" if x is not None else "-"
 
 
-def write_doc(path, s):
+def assumption_rows(s, pct):
+    """The order used and the table of the assumption tests A1-A3 of summary s (pct: the percent
+    format), as the document's lines."""
     t = s["tests"]
+    return [
+        "",
+        f"Order used: k = {s['order']:.3f} (the last pair). p* = p_N + (p_N - p_N-1) / (2^k - 1).",
+        "",
+        "| assumption | test | measured | holds |",
+        "|---|---|---|---|",
+        f"| A1 asymptotic range | orders of the last three pairs within {ORDER_SPREAD} | "
+        f"{', '.join(f'{o:.3f}' for o in t['A1_orders_last_three'])} (spread {t['A1_spread']:.3f}) | {'yes' if t['A1_ok'] else 'NO'} |",
+        f"| A2 one error shape | its effect on p*, m L1(d_N-1) / (2^k - 1), below the finest level's error | "
+        f"m = {t['A2_shape_mismatch']:.3f}: {pct(t['A2_effect_on_reference'])} against {pct(t['A3_finest_level_error'])} | {'yes' if t['A2_ok'] else 'NO'} |",
+        f"| A3 stable extrapolant | the reference without the finest level moves less than the finest level's error | "
+        f"{pct(t['A3_reference_change_without_finest'])} against {pct(t['A3_finest_level_error'])} | {'yes' if t['A3_ok'] else 'NO'} |",
+    ]
+
+
+def write_doc(path, s):
     lines = [
         "# An accuracy reference for the force curve",
         "",
@@ -314,18 +332,7 @@ def write_doc(path, s):
                      f"{pct(r.get('difference_to_next'))} | {o:.2f} |" if o is not None else
                      f"| {r['nr']} | {r['steps']} | {r['wall_seconds']:.2f} | {pct(r['error'])} | "
                      f"{pct(r.get('difference_to_next'))} | - |")
-    lines += [
-        "",
-        f"Order used: k = {s['order']:.3f} (the last pair). p* = p_N + (p_N - p_N-1) / (2^k - 1).",
-        "",
-        "| assumption | test | measured | holds |",
-        "|---|---|---|---|",
-        f"| A1 asymptotic range | orders of the last three pairs within {ORDER_SPREAD} | "
-        f"{', '.join(f'{o:.3f}' for o in t['A1_orders_last_three'])} (spread {t['A1_spread']:.3f}) | {'yes' if t['A1_ok'] else 'NO'} |",
-        f"| A2 one error shape | its effect on p*, m L1(d_N-1) / (2^k - 1), below the finest level's error | "
-        f"m = {t['A2_shape_mismatch']:.3f}: {pct(t['A2_effect_on_reference'])} against {pct(t['A3_finest_level_error'])} | {'yes' if t['A2_ok'] else 'NO'} |",
-        f"| A3 stable extrapolant | the reference without the finest level moves less than the finest level's error | "
-        f"{pct(t['A3_reference_change_without_finest'])} against {pct(t['A3_finest_level_error'])} | {'yes' if t['A3_ok'] else 'NO'} |",
+    lines += assumption_rows(s, pct) + [
         "",
         f"The reference's uncertainty (the larger of A2's and A3's): {pct(s['reference_uncertainty'])}.",
         "",

@@ -7,7 +7,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from reference_curve import ROOT, TEND, STEPS_PER_ELEMENT, ORDER_SPREAD, run, l1, austenite_time, fraction_reference  # noqa: E402
+from reference_curve import ROOT, TEND, STEPS_PER_ELEMENT, run, l1, austenite_time, fraction_reference, assumption_rows  # noqa: E402
 
 # --scale paper (the module docstring): 20 nr steps over 80 s, the reduced scale's dt = 4 / nr s.
 PAPER_TEND = 80.0
@@ -106,7 +106,7 @@ def pct3(x):
     return f"{100 * x:.3g} %" if x is not None else "-"
 
 def write_doc_paper(path, s):
-    t, w = s["tests"], s["reversion_window"]
+    w = s["reversion_window"]
     lines = [
         "# An accuracy reference for the force curve at the paper's scale",
         "",
@@ -131,18 +131,7 @@ def write_doc_paper(path, s):
         lines.append(f"| {r['nr']} | {r['steps']} | {r['wall_seconds']:.2f} | {pct3(r['error'])} | "
                      f"{pct3(r.get('error_reversion'))} | {pct3(r.get('difference_to_next'))} | "
                      + (f"{o:.2f} |" if o is not None else "- |"))
-    lines += [
-        "",
-        f"Order used: k = {s['order']:.3f} (the last pair). p* = p_N + (p_N - p_N-1) / (2^k - 1).",
-        "",
-        "| assumption | test | measured | holds |",
-        "|---|---|---|---|",
-        f"| A1 asymptotic range | orders of the last three pairs within {ORDER_SPREAD} | "
-        f"{', '.join(f'{o:.3f}' for o in t['A1_orders_last_three'])} (spread {t['A1_spread']:.3f}) | {'yes' if t['A1_ok'] else 'NO'} |",
-        f"| A2 one error shape | its effect on p*, m L1(d_N-1) / (2^k - 1), below the finest level's error | "
-        f"m = {t['A2_shape_mismatch']:.3f}: {pct3(t['A2_effect_on_reference'])} against {pct3(t['A3_finest_level_error'])} | {'yes' if t['A2_ok'] else 'NO'} |",
-        f"| A3 stable extrapolant | the reference without the finest level moves less than the finest level's error | "
-        f"{pct3(t['A3_reference_change_without_finest'])} against {pct3(t['A3_finest_level_error'])} | {'yes' if t['A3_ok'] else 'NO'} |",
+    lines += assumption_rows(s, pct3) + [
         "",
         f"The reference's uncertainty (the larger of A2's and A3's): {pct3(s['reference_uncertainty'])} over the transient.",
     ]
