@@ -13,58 +13,48 @@ martensite again or do not (its pressure on one of the two plateaus: within 6 % 
 2 MPa value, the lower plateau rising slowly with k),
 while the fraction model re-transforms the ring in part (its pressure strictly between the
 plateaus, at least 20 % from each): a cliff of the design chart, resolved by the fraction model.
-Writes results/checks/sleeve_life_schemes.json.
+Runs into build/test-results/life-schemes-*/; writes results/checks/sleeve_life_schemes.json.
 """
-import json
 import os
-import shutil
-import subprocess
 import sys
-import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from checklib import ROOT, check, finish, record  # noqa: E402
+from checklib import check, finish, record, run_scene_captured, summary_of  # noqa: E402
 
 
-def pressure(work, name, *args):
-    out = os.path.join(work, name)
-    proc = subprocess.run([os.path.join(ROOT, "tools", "ff"), "edp/scenes/sleeve-life.edp", "-quiet", "1",
-                           "-out", out, *args], cwd=ROOT, capture_output=True, text=True, timeout=600)
+def pressure(name, *args):
+    """sleeve-life's pressure after the cold hold, run into build/test-results/life-schemes-<name>."""
+    out, proc = run_scene_captured("sleeve-life", "life-schemes-" + name, "-quiet", "1", *args)
     if proc.returncode != 0:
         check(False, f"sleeve-life {' '.join(args)} exit {proc.returncode}: {proc.stderr[-300:]}")
         return float("nan")
-    with open(os.path.join(out, "summary.json")) as f:
-        return json.load(f)["pressure_at_service_Tmin"]
+    return summary_of(out)["pressure_at_service_Tmin"]
 
 
 def main():
-    work = tempfile.mkdtemp(prefix="life-schemes-")
     data = {}
-    try:
-        for k in ("0", "1e6", "2e6"):
-            onoff = pressure(work, f"onoff-{k}", "-dissipation", k)
-            fraction = pressure(work, f"fraction-{k}", "-dissipation", k, "-phasemodel", "fraction")
-            coarse = pressure(work, f"fraction-{k}-nr20", "-dissipation", k, "-phasemodel", "fraction", "-nr", "20")
-            fine_t = pressure(work, f"fraction-{k}-nr20-2dt", "-dissipation", k, "-phasemodel", "fraction", "-nr", "20",
-                              "-steps", "13240")
-            data[k] = {"onoff": onoff, "fraction": fraction, "fraction_nr20": coarse, "fraction_nr20_steps13240": fine_t}
-            check(abs(fraction / onoff - 1) < 0.01,
-                  f"k {k} Pa: fraction {fraction / 1e6:.3f} MPa, on/off {onoff / 1e6:.3f} MPa, within 1 %")
-            check(abs(coarse / fraction - 1) < 0.005 and abs(fine_t / coarse - 1) < 0.005,
-                  f"k {k} Pa: fraction converged: nr 20 {coarse / 1e6:.3f} against nr 80 {fraction / 1e6:.3f} MPa, "
-                  f"twice the steps {fine_t / 1e6:.3f} MPa, each within 0.5 %")
-        low, high = data["1e6"]["onoff"], data["2e6"]["onoff"]
-        onoff = pressure(work, "onoff-cliff", "-dissipation", "1.3e6")
-        fraction = pressure(work, "fraction-cliff", "-dissipation", "1.3e6", "-phasemodel", "fraction")
-        data["1.3e6"] = {"onoff": onoff, "fraction": fraction, "plateau_low": low, "plateau_high": high}
-        on_plateau = min(abs(onoff / low - 1), abs(onoff / high - 1))
-        check(on_plateau < 0.06, f"k 1.3 MPa: on/off {onoff / 1e6:.2f} MPa on a plateau ({low / 1e6:.2f} or "
-                                 f"{high / 1e6:.2f} MPa: {100 * on_plateau:.1f} % from it)")
-        check(fraction > 1.2 * low and fraction < high / 1.2,
-              f"k 1.3 MPa: fraction {fraction / 1e6:.2f} MPa strictly between the plateaus (partly re-transformed)")
-    finally:
-        shutil.rmtree(work, ignore_errors=True)
+    for k in ("0", "1e6", "2e6"):
+        onoff = pressure(f"onoff-{k}", "-dissipation", k)
+        fraction = pressure(f"fraction-{k}", "-dissipation", k, "-phasemodel", "fraction")
+        coarse = pressure(f"fraction-{k}-nr20", "-dissipation", k, "-phasemodel", "fraction", "-nr", "20")
+        fine_t = pressure(f"fraction-{k}-nr20-2dt", "-dissipation", k, "-phasemodel", "fraction", "-nr", "20",
+                          "-steps", "13240")
+        data[k] = {"onoff": onoff, "fraction": fraction, "fraction_nr20": coarse, "fraction_nr20_steps13240": fine_t}
+        check(abs(fraction / onoff - 1) < 0.01,
+              f"k {k} Pa: fraction {fraction / 1e6:.3f} MPa, on/off {onoff / 1e6:.3f} MPa, within 1 %")
+        check(abs(coarse / fraction - 1) < 0.005 and abs(fine_t / coarse - 1) < 0.005,
+              f"k {k} Pa: fraction converged: nr 20 {coarse / 1e6:.3f} against nr 80 {fraction / 1e6:.3f} MPa, "
+              f"twice the steps {fine_t / 1e6:.3f} MPa, each within 0.5 %")
+    low, high = data["1e6"]["onoff"], data["2e6"]["onoff"]
+    onoff = pressure("onoff-cliff", "-dissipation", "1.3e6")
+    fraction = pressure("fraction-cliff", "-dissipation", "1.3e6", "-phasemodel", "fraction")
+    data["1.3e6"] = {"onoff": onoff, "fraction": fraction, "plateau_low": low, "plateau_high": high}
+    on_plateau = min(abs(onoff / low - 1), abs(onoff / high - 1))
+    check(on_plateau < 0.06, f"k 1.3 MPa: on/off {onoff / 1e6:.2f} MPa on a plateau ({low / 1e6:.2f} or "
+                             f"{high / 1e6:.2f} MPa: {100 * on_plateau:.1f} % from it)")
+    check(fraction > 1.2 * low and fraction < high / 1.2,
+          f"k 1.3 MPa: fraction {fraction / 1e6:.2f} MPa strictly between the plateaus (partly re-transformed)")
     record("sleeve_life_schemes", data)
     finish()
 

@@ -18,114 +18,90 @@ it over the run):
 sleeve-elliptic-friction at -steps 100 (the step the nested loops could not solve, step 39 of
 100: a slip-threshold fixed point at its limit) is solved in halves: exit 0, steps_retried >= 1,
 step_splits >= 1, every node inside the Coulomb cone at the end.
-Writes results/checks/time_steps.json.
+Runs into build/test-results/time-steps-*/; writes results/checks/time_steps.json.
 """
-import csv
-import json
 import os
-import shutil
-import subprocess
 import sys
-import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from checklib import ROOT, check, finish, record  # noqa: E402
+from checklib import check, finish, record, rows, run_scene_captured, summary_of  # noqa: E402
 from curve_error import curve_error  # noqa: E402
 
 
-def run(scene, out, *args):
-    proc = subprocess.run([os.path.join(ROOT, "tools", "ff"), f"edp/scenes/{scene}.edp", "-quiet", "1",
-                           "-out", out, *args], cwd=ROOT, capture_output=True, text=True, timeout=600)
-    return proc
-
-
-def history(out):
-    with open(os.path.join(out, "history.csv"), newline="") as f:
-        return list(csv.DictReader(f))
-
-
-def summary(out):
-    with open(os.path.join(out, "summary.json")) as f:
-        return json.load(f)
+def run(scene, name, *args):
+    """The scene into build/test-results/time-steps-<name> (checklib), quiet; (folder, process)."""
+    return run_scene_captured(scene, "time-steps-" + name, "-quiet", "1", *args)
 
 
 def main():
-    work = tempfile.mkdtemp(prefix="time-steps-")
     data = {}
-    try:
-        ref = os.path.join(work, "ref")
-        proc = run("sleeve-radial", ref, "-steps", "10000")
-        check(proc.returncode == 0, f"sleeve-radial -steps 10000 (the reference) exit {proc.returncode} {proc.stderr[-300:]}")
-        for name, args in (("tol1e-3", ["-tol", "1e-3"]), ("tol3e-4", ["-tol", "3e-4"]),
-                           ("steps150", ["-steps", "150"])):
-            out = os.path.join(work, name)
-            proc = run("sleeve-radial", out, *args)
-            check(proc.returncode == 0, f"sleeve-radial {' '.join(args)} exit {proc.returncode} {proc.stderr[-300:]}")
-            if proc.returncode != 0:
-                continue
-            s, e = summary(out), curve_error(os.path.join(out, "history.csv"), os.path.join(ref, "history.csv"))
-            eff = s["time_error_estimate"] / e["l1"]
-            eff_tr = s["time_error_estimate_transient"] / e["l1_transient"]
-            data[name] = {"steps": s["n_steps"], "rejected": s["steps_rejected"], "l1": e["l1"],
-                          "estimate": s["time_error_estimate"], "effectivity": eff,
-                          "l1_transient": e["l1_transient"], "estimate_transient": s["time_error_estimate_transient"],
-                          "effectivity_transient": eff_tr, "l1_reversion": e["l1_reversion"]}
-            check(0.5 <= eff <= 2, f"{name}: estimate {s['time_error_estimate']:.3e} over the measured "
-                                   f"{e['l1']:.3e} = {eff:.2f}, in [0.5, 2]")
-            check(0.5 <= eff_tr <= 2, f"{name}: transient estimate {s['time_error_estimate_transient']:.3e} over "
-                                      f"the measured {e['l1_transient']:.3e} = {eff_tr:.2f}, in [0.5, 2]")
-            rows = history(out)
-            t = [float(r["t"]) for r in rows]
-            dt = [float(r["dt"]) for r in rows]
-            check(abs(s["final_pressure_mean"] / s["lame_pressure"] - 1) < 1e-6,
-                  f"{name}: final pressure {s['final_pressure_mean']:.6e} = Lame {s['lame_pressure']:.6e}")
-            check(s["heat_balance_residual_max"] < 1e-9,
-                  f"{name}: heat balance of every step {s['heat_balance_residual_max']:.2e} < 1e-9")
-            if "tol" in name:
-                tol = float(args[1])
-                check(s["steps_rejected"] > 0 and s["step_error_ratio_max"] <= 1,
-                      f"{name}: {s['steps_rejected']} steps rejected and taken again, accepted ratios <= 1 "
-                      f"(max {s['step_error_ratio_max']:.3f})")
-                gaps = max(abs(dt[i] - (t[i] - (t[i - 1] if i else 0.0))) for i in range(len(t)))
-                check(gaps <= 1e-12 * t[-1] and t[-1] == s["parameters"]["tend"] and
-                      max(dt) <= s["dt_max"] * (1 + 1e-12) and all(x > 0 for x in dt),
-                      f"{name}: {len(t)} rows, dt = the differences of t (to {gaps:.1e}), 0 < dt <= dt_max "
-                      f"{s['dt_max']}, the last t {t[-1]} = tend")
-                check(e["l1_transient"] <= 3 * tol, f"{name}: measured transient error {e['l1_transient']:.2e} "
-                                                     f"<= 3 tol = {3 * tol:.1e}")
-            else:
-                step = s["parameters"]["dt"]
-                check(all(float(r["t"]) == int(r["step"]) * step and float(r["dt"]) == step for r in rows),
-                      f"{name}: every row's t = step x dt ({step}) and dt = {step}, bit for bit")
-        # An adaptive run stopped and resumed equals the whole one.
-        whole, part = os.path.join(work, "whole"), os.path.join(work, "part")
-        adaptive = ["-tol", "1e-3", "-checkpoint", "10"]
-        p1 = run("sleeve-radial", whole, *adaptive)
-        p2 = run("sleeve-radial", part, *adaptive, "-stopafter", "25")
-        p3 = run("sleeve-radial", part, *adaptive, "-resume", "1")
-        same = (p1.returncode, p2.returncode, p3.returncode) == (0, 4, 0)
-        if same:
-            with open(os.path.join(whole, "history.csv")) as a, open(os.path.join(part, "history.csv")) as b:
-                same = a.read() == b.read()
-        check(same, f"-tol 1e-3 stopped after step 25 and resumed from the checkpoint of step 20: history.csv "
-                    f"equals the whole run's (exits {p1.returncode} {p2.returncode} {p3.returncode})")
-        # A step the solvers cannot take whole is taken in halves.
-        out = os.path.join(work, "friction100")
-        proc = run("sleeve-elliptic-friction", out, "-steps", "100", "-vtkevery", "0")
-        check(proc.returncode == 0, f"sleeve-elliptic-friction -steps 100 exit {proc.returncode} {proc.stderr[-300:]}")
-        if proc.returncode == 0:
-            s = summary(out)
-            data["friction100"] = {k: s[k] for k in ("steps_retried", "step_splits", "final_nodes_inside_cone",
-                                                      "final_nodes_in_contact")}
-            check(s["steps_retried"] >= 1 and s["step_splits"] >= 1,
-                  f"sleeve-elliptic-friction -steps 100: {s['steps_retried']} step(s) retried in "
-                  f"{s['step_splits']} splits")
-            check(s["final_nodes_inside_cone"] == s["final_nodes_in_contact"] > 0,
-                  f"sleeve-elliptic-friction -steps 100: {s['final_nodes_inside_cone']} of "
-                  f"{s['final_nodes_in_contact']} nodes in contact inside the Coulomb cone")
-    finally:
-        shutil.rmtree(work, ignore_errors=True)
+    ref, proc = run("sleeve-radial", "ref", "-steps", "10000")
+    check(proc.returncode == 0, f"sleeve-radial -steps 10000 (the reference) exit {proc.returncode} {proc.stderr[-300:]}")
+    for name, args in (("tol1e-3", ["-tol", "1e-3"]), ("tol3e-4", ["-tol", "3e-4"]),
+                       ("steps150", ["-steps", "150"])):
+        out, proc = run("sleeve-radial", name, *args)
+        check(proc.returncode == 0, f"sleeve-radial {' '.join(args)} exit {proc.returncode} {proc.stderr[-300:]}")
+        if proc.returncode != 0:
+            continue
+        s, e = summary_of(out), curve_error(os.path.join(out, "history.csv"), os.path.join(ref, "history.csv"))
+        eff = s["time_error_estimate"] / e["l1"]
+        eff_tr = s["time_error_estimate_transient"] / e["l1_transient"]
+        data[name] = {"steps": s["n_steps"], "rejected": s["steps_rejected"], "l1": e["l1"],
+                      "estimate": s["time_error_estimate"], "effectivity": eff,
+                      "l1_transient": e["l1_transient"], "estimate_transient": s["time_error_estimate_transient"],
+                      "effectivity_transient": eff_tr, "l1_reversion": e["l1_reversion"]}
+        check(0.5 <= eff <= 2, f"{name}: estimate {s['time_error_estimate']:.3e} over the measured "
+                               f"{e['l1']:.3e} = {eff:.2f}, in [0.5, 2]")
+        check(0.5 <= eff_tr <= 2, f"{name}: transient estimate {s['time_error_estimate_transient']:.3e} over "
+                                  f"the measured {e['l1_transient']:.3e} = {eff_tr:.2f}, in [0.5, 2]")
+        history = rows(os.path.join(out, "history.csv"))
+        t = [float(r["t"]) for r in history]
+        dt = [float(r["dt"]) for r in history]
+        check(abs(s["final_pressure_mean"] / s["lame_pressure"] - 1) < 1e-6,
+              f"{name}: final pressure {s['final_pressure_mean']:.6e} = Lame {s['lame_pressure']:.6e}")
+        check(s["heat_balance_residual_max"] < 1e-9,
+              f"{name}: heat balance of every step {s['heat_balance_residual_max']:.2e} < 1e-9")
+        if "tol" in name:
+            tol = float(args[1])
+            check(s["steps_rejected"] > 0 and s["step_error_ratio_max"] <= 1,
+                  f"{name}: {s['steps_rejected']} steps rejected and taken again, accepted ratios <= 1 "
+                  f"(max {s['step_error_ratio_max']:.3f})")
+            gaps = max(abs(dt[i] - (t[i] - (t[i - 1] if i else 0.0))) for i in range(len(t)))
+            check(gaps <= 1e-12 * t[-1] and t[-1] == s["parameters"]["tend"] and
+                  max(dt) <= s["dt_max"] * (1 + 1e-12) and all(x > 0 for x in dt),
+                  f"{name}: {len(t)} rows, dt = the differences of t (to {gaps:.1e}), 0 < dt <= dt_max "
+                  f"{s['dt_max']}, the last t {t[-1]} = tend")
+            check(e["l1_transient"] <= 3 * tol, f"{name}: measured transient error {e['l1_transient']:.2e} "
+                                                 f"<= 3 tol = {3 * tol:.1e}")
+        else:
+            step = s["parameters"]["dt"]
+            check(all(float(r["t"]) == int(r["step"]) * step and float(r["dt"]) == step for r in history),
+                  f"{name}: every row's t = step x dt ({step}) and dt = {step}, bit for bit")
+    # An adaptive run stopped and resumed equals the whole one.
+    adaptive = ["-tol", "1e-3", "-checkpoint", "10"]
+    whole, p1 = run("sleeve-radial", "whole", *adaptive)
+    part, p2 = run("sleeve-radial", "part", *adaptive, "-stopafter", "25")
+    part, p3 = run("sleeve-radial", "part", *adaptive, "-resume", "1")
+    same = (p1.returncode, p2.returncode, p3.returncode) == (0, 4, 0)
+    if same:
+        with open(os.path.join(whole, "history.csv")) as a, open(os.path.join(part, "history.csv")) as b:
+            same = a.read() == b.read()
+    check(same, f"-tol 1e-3 stopped after step 25 and resumed from the checkpoint of step 20: history.csv "
+                f"equals the whole run's (exits {p1.returncode} {p2.returncode} {p3.returncode})")
+    # A step the solvers cannot take whole is taken in halves.
+    out, proc = run("sleeve-elliptic-friction", "friction100", "-steps", "100", "-vtkevery", "0")
+    check(proc.returncode == 0, f"sleeve-elliptic-friction -steps 100 exit {proc.returncode} {proc.stderr[-300:]}")
+    if proc.returncode == 0:
+        s = summary_of(out)
+        data["friction100"] = {k: s[k] for k in ("steps_retried", "step_splits", "final_nodes_inside_cone",
+                                                  "final_nodes_in_contact")}
+        check(s["steps_retried"] >= 1 and s["step_splits"] >= 1,
+              f"sleeve-elliptic-friction -steps 100: {s['steps_retried']} step(s) retried in "
+              f"{s['step_splits']} splits")
+        check(s["final_nodes_inside_cone"] == s["final_nodes_in_contact"] > 0,
+              f"sleeve-elliptic-friction -steps 100: {s['final_nodes_inside_cone']} of "
+              f"{s['final_nodes_in_contact']} nodes in contact inside the Coulomb cone")
     record("time_steps", data)
     finish()
 
