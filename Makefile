@@ -181,7 +181,7 @@ RUN_PLOT = $(if $(wildcard tools/plot/plot_$(SCENE).py),$(PYTHON) tools/plot/plo
 # from the folder the run wrote (a -out among ARGS included).
 run: export RUN_ARGS := $(value ARGS)
 run: check-scene plugin meshes python
-	@$(PYTHON) tools/run_scene.py $(RUN_SCRIPT) $(RUN_RESULTS) $(RUN_PLOT)
+	@$(PYTHON) tools/run_scene.py --env-args RUN_ARGS $(RUN_SCRIPT) $(RUN_RESULTS) $(RUN_PLOT)
 
 # A checkout copied or moved elsewhere keeps a build/CMakeCache.txt naming the old folder, which
 # cmake refuses: such a build/ is another checkout's and is rebuilt from scratch.
@@ -242,11 +242,10 @@ paper-scale: plugin meshes
 NP ?= 2
 SEEDS ?= 8
 OUT ?= results/sleeve-random-ensemble
-# NP, SEEDS, OUT and ARGS reach tools/run_scene.py through the environment (see run).
+# OUT and ARGS reach tools/run_scene.py through the environment (see run), NP and SEEDS as its
+# arguments once checked to be whole numbers.
 ensemble: export RUN_ARGS := $(value ARGS)
-ensemble: export RUN_FIXED := -v 0 -seeds $(value SEEDS)
 ensemble: export RUN_OUT := $(value OUT)
-ensemble: export RUN_LAUNCHER := mpiexec --oversubscribe -np $(value NP) FreeFem++-mpi -nw -ne
 ensemble: export ENSEMBLE_NP := $(value NP)
 ensemble: export ENSEMBLE_SEEDS := $(value SEEDS)
 ensemble: plugin meshes
@@ -257,7 +256,8 @@ ensemble: plugin meshes
 	@OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_mpi_yield_when_idle=1 \
 	  FF_INCLUDEPATH="$$(pwd -P)/edp/lib;$$(pwd -P)/edp/model;$$(pwd -P)/edp/solvers;$$(pwd -P)/edp/problems;/usr/include/freefem++/idp;./" \
 	  FF_LOADPATH="$$(pwd -P)/plugin/build;/usr/lib/freefem++;./" \
-	  $(PYTHON) tools/run_scene.py edp/ensemble/sleeve-random-ensemble.edp results/sleeve-random-ensemble \
+	  $(PYTHON) tools/run_scene.py --env-args RUN_ARGS --env-out RUN_OUT --mpi "$$ENSEMBLE_NP" --seeds "$$ENSEMBLE_SEEDS" \
+	  edp/ensemble/sleeve-random-ensemble.edp results/sleeve-random-ensemble \
 	  $(PYTHON) tools/plot/plot_ensemble.py
 
 figures: test

@@ -1,12 +1,15 @@
 #!/usr/bin/python3
 """Runs one scene for `make run` / `make ensemble`, then draws its figures from the folder it wrote.
 
-Usage (the Makefile's):  tools/run_scene.py SCRIPT DEFAULT_OUT [PLOT COMMAND ...]
-  with, from the environment:
-    RUN_ARGS      the user's ARGS
-    RUN_FIXED     words the Makefile puts before them (make ensemble: -v 0 -seeds N)
-    RUN_OUT       an output folder the Makefile gives (make ensemble's OUT): one word, as typed
-    RUN_LAUNCHER  the command that runs a script (default tools/ff; make ensemble: ff-mpirun -np N)
+Usage (the Makefile's):
+  tools/run_scene.py [--env-args VAR] [--env-out VAR] [--mpi NP --seeds N] SCRIPT DEFAULT_OUT [PLOT COMMAND ...]
+    --env-args VAR  the user's ARGS, read from the environment variable VAR (make run: RUN_ARGS)
+    --env-out VAR   an output folder the user gave (make ensemble's OUT), read from VAR: one word
+    --mpi NP        run on NP MPI ranks (mpiexec --oversubscribe -np NP FreeFem++-mpi -nw -ne)
+                    instead of tools/ff
+    --seeds N       put -v 0 -seeds N before the user's words (make ensemble)
+Only the variables named here are read: nothing of the user's environment (a stray RUN_ARGS,
+RUN_OUT, a launcher's name) changes what runs unless its name is on this command line.
 What the user types reaches this script through the environment, never pasted into a shell
 command: it is split like a shell's words (quotes group: -out 'my dir') but nothing in it is ever
 run (`;`, `$(...)` and backquotes are characters). The figures are drawn from the folder the run
@@ -24,14 +27,34 @@ import children
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
-def words_of(variable, default=""):
-    """The shell words of an environment variable; exits 2 naming it when its quotes do not close."""
+def words_of(variable, name):
+    """The shell words of the environment variable `variable` (the user's `name`, for the
+    messages); exits 2 naming it when its quotes do not close."""
     try:
-        return shlex.split(os.environ.get(variable, default))
+        return shlex.split(os.environ.get(variable, ""))
     except ValueError as e:
-        name = "ARGS" if variable == "RUN_ARGS" else variable
-        print(f"error: {name}: {e} (quote each value whole: ARGS=\"-out 'my dir'\")", file=sys.stderr)
+        print(f"error: {name}: {e} (quote each value whole: {name}=\"-out 'my dir'\")", file=sys.stderr)
         sys.exit(2)
+
+
+def whole_number(text, what, largest):
+    """text as a whole number from 1 to largest, or exit 2 naming `what`."""
+    if not text.isdigit() or not 1 <= int(text) <= largest:
+        print(f"error: {what}='{text}' must be a whole number from 1 to {largest}", file=sys.stderr)
+        sys.exit(2)
+    return text
+
+
+def parse(argv):
+    """The leading --options of argv (see the docstring), then SCRIPT, DEFAULT_OUT and PLOT."""
+    opts = {"env-args": None, "env-out": None, "mpi": None, "seeds": None}
+    while argv and argv[0].startswith("--"):
+        name = argv[0][2:]
+        if name not in opts or len(argv) < 2:
+            print(f"error: tools/run_scene.py: unknown option or missing value: {argv[0]}", file=sys.stderr)
+            sys.exit(2)
+        opts[name], argv = argv[1], argv[2:]
+    return opts, argv
 
 
 def output_folder(words, default):
@@ -44,11 +67,18 @@ def output_folder(words, default):
 
 
 def main(argv):
+    opts, argv = parse(argv)
     if len(argv) < 2:
         print(__doc__, file=sys.stderr)
         return 2
     script, default_out, plot = argv[0], argv[1], argv[2:]
-    launcher = words_of("RUN_LAUNCHER") or [os.path.join(ROOT, "tools", "ff")]
+    launcher = [os.path.join(ROOT, "tools", "ff")]
+    fixed = []
+    if opts["mpi"] is not None:
+        launcher = ["mpiexec", "--oversubscribe", "-np", whole_number(opts["mpi"], "NP", 9999), "FreeFem++-mpi",
+                    "-nw", "-ne"]
+    if opts["seeds"] is not None:
+        fixed = ["-v", "0", "-seeds", whole_number(opts["seeds"], "SEEDS", 999999)]
     # The programs the launcher starts, named before anything runs (mpiexec's own message for a
     # missing FreeFem++-mpi is OpenMPI's, exit 134).
     missing = [w for w in launcher if w in ("mpiexec", "FreeFem++-mpi") and shutil.which(w) is None]
@@ -56,11 +86,12 @@ def main(argv):
         print(f"error: {missing[0]} is not installed (or not on PATH): run 'make deps' (Debian's freefem++ "
               "and openmpi)", file=sys.stderr)
         return 3
-    user = words_of("RUN_ARGS")
-    if "RUN_OUT" in os.environ and (not os.environ["RUN_OUT"].strip() or os.environ["RUN_OUT"].startswith("-")):
-        print(f"error: OUT='{os.environ['RUN_OUT']}' is not a folder name (empty, or an option)", file=sys.stderr)
+    user = words_of(opts["env-args"], "ARGS") if opts["env-args"] else []
+    out_given = os.environ.get(opts["env-out"], "") if opts["env-out"] else None
+    if out_given is not None and (not out_given.strip() or out_given.startswith("-")):
+        print(f"error: OUT='{out_given}' is not a folder name (empty, or an option)", file=sys.stderr)
         return 2
-    words = words_of("RUN_FIXED") + (["-out", os.environ["RUN_OUT"]] if os.environ.get("RUN_OUT") else []) + user
+    words = fixed + (["-out", out_given] if out_given else []) + user
     # No shell ever sees these words, so nothing expands `~`: a folder named ~ would be made here.
     home = [w for w in words if w == "~" or w.startswith("~/")]
     if home:

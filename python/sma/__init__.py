@@ -15,6 +15,17 @@ the scenes of the checkout it lives in (sma.ROOT) through tools/ff, whatever the
 directory. docs/python-api.md lists every public function (generated from these docstrings);
 docs/outputs.md every file, column and unit.
 """
+import os as _os
+import sys as _sys
+
+# OpenBLAS (numpy's BLAS) starts a worker thread per core at import; under an address-space limit
+# (ulimit -v, about 300 MB) its allocation retries forever and the process, plot tool or sweep,
+# spun without end, deaf to TERM (tools/ff sets the same for FreeFEM and says why). The figures and
+# tables make no BLAS call worth a thread. Only before numpy is loaded, and never over a value the
+# user chose.
+if "numpy" not in _sys.modules:
+    _os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+
 from .driver import Results, check_option, options, read, read_csv, run, scenes, script
 from .errors import SceneError
 from .frames import frame

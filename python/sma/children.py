@@ -6,11 +6,14 @@ then SIGKILL), no new child is started (a sweep's queued runs), and this process
 signal's number, as the shell would. GNU make passes a TERM on to the recipe it runs, tools/ff to
 FreeFEM: a TERM to `make run` reaches every process of the run.
 """
+import contextlib
 import ctypes
+import os
 import signal
 import subprocess
 import sys
 import threading
+import time
 
 _PR_SET_PDEATHSIG = 1
 try:
@@ -36,7 +39,10 @@ def _forward(signum, frame):
     with _lock:
         _stopped_by.append(signum)
         procs = list(_running)
-    _end(procs, signum)
+    # Never Popen.wait here: the handler runs in the main thread, which may be inside that very
+    # Popen's wait, holding its lock (a self-deadlock only SIGKILL ended). The children's ends are
+    # watched without reaping them; each Popen reaps its own once this exception unwinds its wait.
+    _end(procs, signum, reap=False)
     print(f"error: stopped by signal {signal.Signals(signum).name}: {len(procs)} running child process(es) "
           "stopped with it", file=sys.stderr)
     sys.stderr.flush()
@@ -52,6 +58,24 @@ def install():
     _die_with_parent()
 
 
+@contextlib.contextmanager
+def terminable():
+    """While the block runs in the main thread, a TERM or HUP that would end this process without a
+    word (Python's default: a script or a notebook that set no handler of its own) stops the
+    children as install() does, says so and exits 128 + the signal's number. A handler the caller
+    set is left alone; elsewhere than in the main thread (where Python runs handlers) nothing."""
+    saved = {}
+    if threading.current_thread() is threading.main_thread():
+        for s in (signal.SIGTERM, signal.SIGHUP):
+            if signal.getsignal(s) == signal.SIG_DFL:
+                saved[s] = signal.signal(s, _forward)
+    try:
+        yield
+    finally:
+        for s, handler in saved.items():
+            signal.signal(s, handler)
+
+
 def run(args, **kwargs):
     """subprocess.run(args, **kwargs) whose process is stopped with this one (see install). After
     a forwarded signal it starts nothing: it returns exit 128 + that signal's number at once."""
@@ -62,7 +86,7 @@ def run(args, **kwargs):
     if _stopped_by:
         return subprocess.CompletedProcess(args, 128 + _stopped_by[0], "" if capture else None, "" if capture else None)
     kwargs.setdefault("preexec_fn", _die_with_parent)
-    with subprocess.Popen(args, **kwargs) as p:
+    with terminable(), subprocess.Popen(args, **kwargs) as p:
         with _lock:
             _running.add(p)
             late = bool(_stopped_by)  # the signal came while this child was starting
@@ -79,18 +103,38 @@ def run(args, **kwargs):
     return subprocess.CompletedProcess(args, p.returncode, out, err)
 
 
-def _end(procs, signum=signal.SIGTERM):
-    """Sends signum to each process, awaits each (10 s, then SIGKILL)."""
+def _exited(p):
+    """Whether p's process has ended, without reaping it (waitid with WNOWAIT): the Popen that owns
+    it still collects its status."""
+    if p.returncode is not None:
+        return True
+    try:
+        return os.waitid(os.P_PID, p.pid, os.WEXITED | os.WNOHANG | os.WNOWAIT) is not None
+    except ChildProcessError:  # reaped already (by the thread that runs it)
+        return True
+
+
+def _end(procs, signum=signal.SIGTERM, reap=True, grace=10.0):
+    """Sends signum to each process still running and awaits each end (grace seconds, then
+    SIGKILL). reap=False: watches the ends without Popen.wait (see _forward)."""
     for p in procs:
-        try:
-            p.send_signal(signum)
-        except OSError:
-            pass
+        if not _exited(p):
+            try:
+                os.kill(p.pid, signum)
+            except OSError:
+                pass
+    deadline = time.monotonic() + grace
     for p in procs:
-        try:
-            p.wait(timeout=10)
-        except subprocess.TimeoutExpired:
-            p.kill()
+        while not _exited(p) and time.monotonic() < deadline:
+            time.sleep(0.02)
+        if not _exited(p):
+            try:
+                os.kill(p.pid, signal.SIGKILL)
+            except OSError:
+                pass
+            while not _exited(p):
+                time.sleep(0.02)
+        if reap:
             p.wait()
 
 

@@ -61,10 +61,9 @@ import subprocess
 import sys
 import time
 
-import numpy as np
-
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tools/: results_io
-import results_io  # noqa: E402
+import results_io  # noqa: E402  (first: the sma package sets numpy's threads before numpy loads)
+import numpy as np  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 TEND = 30.0

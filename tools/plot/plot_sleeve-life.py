@@ -14,13 +14,12 @@ Usage: tools/plot/plot_sleeve-life.py results/sleeve-life
 import os
 import sys
 
-import matplotlib
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tools/: results_io, units
+import results_io  # noqa: E402  (first: the sma package sets numpy's threads before numpy loads)
+import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-
-sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tools/: results_io, units
-import results_io  # noqa: E402
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from sleeve_curves import read_csv  # noqa: E402
 from sma.plotting import save  # noqa: E402
