@@ -27,7 +27,16 @@ PYTHON := /usr/bin/python3
 FF := tools/ff
 
 PLUGIN := plugin/build/sma.so
-PLUGIN_SOURCES := plugin/sma.cpp $(wildcard plugin/core/*.hpp)
+# The plugin's glue units (plugin/glue/*.cpp), each compiled on its own, in parallel (only
+# step.cpp includes the step solver, the slow one), and again only when it or a header it
+# includes changed (the compiler's dependency lists, plugin/build/<unit>.d). Without debug
+# information (ff-c++ asks for -g: 86 MB of object, half the compile time); PLUGIN_DEBUG=1 keeps it.
+# (step, the longest, first: make -j starts the units in this order.)
+PLUGIN_UNITS := step $(filter-out step,$(sort $(notdir $(basename $(wildcard plugin/glue/*.cpp)))))
+PLUGIN_OBJECTS := $(PLUGIN_UNITS:%=plugin/build/%.o)
+PLUGIN_CXX := ../../tools/cxx17$(if $(filter-out 0,$(PLUGIN_DEBUG)), --debug)
+PLUGIN_FLAGS := plugin/build/compile-flags
+CORES := $(shell nproc 2>/dev/null || echo 2)
 # clock() without a system call, preloaded by tools/ff (plugin/fastclock.c says why).
 FASTCLOCK := plugin/build/fastclock.so
 # The results folder's claim for the Python tools (a sweep's folder): plugin/results_tool.cpp.
@@ -97,7 +106,7 @@ pipe_opt_wall := $(PIPE_RADIUS) -setnumber Ri 0.045 -setnumber lc 0.0005
 sliver_opt_thin := $(SLEEVE_RING) -setnumber eps 1.3e-5
 sliver_opt_degenerate := $(SLEEVE_RING) -setnumber eps 1e-8
 
-.PHONY: run test figures bench reference paper-scale ensemble docs deps plugin meshes clean check-scene sweep python
+.PHONY: run test figures bench reference paper-scale ensemble docs deps plugin plugin-files meshes clean check-scene sweep python
 # The scenes behind the paper's figures (docs/figures.md), run at their defaults by make figures.
 FIGURE_SCENES := beam sleeve-circular sleeve-circular-single sleeve-circular-gvar sleeve-offset \
                  sleeve-elliptic sleeve-elliptic-friction sleeve-random-threshold
@@ -117,7 +126,12 @@ python: deps
 	  || { cat python/install.log; echo "error: installing the sma package (python/) failed (python/install.log)" >&2; exit 1; }; \
 	  rm -f python/install.log; echo "installed the sma package for $$(id -un): import sma runs $$here"; fi
 
-plugin: deps $(PLUGIN) $(FASTCLOCK) $(RESULTS_TOOL) $(OOMGUARD)
+# The plugin's files are made by a make of their own, its jobs as many as the cores unless this
+# make was given -j: `make run` builds the plugin's units in parallel.
+plugin: deps
+	@$(MAKE) --no-print-directory $(if $(findstring -j,$(MAKEFLAGS)),,-j$(CORES)) plugin-files
+plugin-files: $(PLUGIN) $(FASTCLOCK) $(RESULTS_TOOL) $(OOMGUARD)
+	@:
 $(RESULTS_TOOL): plugin/results_tool.cpp plugin/core/files.hpp
 	@mkdir -p plugin/build
 	@g++ -std=c++17 -O2 -Wall -Werror plugin/results_tool.cpp -o $@
@@ -127,11 +141,26 @@ $(FASTCLOCK): plugin/fastclock.c
 $(OOMGUARD): plugin/oomguard.c
 	@mkdir -p plugin/build
 	@cc -O2 -shared -fPIC -Wall -Werror plugin/oomguard.c -o $@
-$(PLUGIN): $(PLUGIN_SOURCES)
-	@mkdir -p plugin/build
-	@cd plugin/build && ff-c++ CXX=../../tools/cxx17 ../sma.cpp -I/usr/include/eigen3 -I/usr/include/suitesparse -I.. -lcholmod > build.log 2>&1 \
-	  || { cat build.log; echo "error: building the plugin failed (plugin/build/build.log)" >&2; exit 1; }
-	@test -f $(PLUGIN) || { cat plugin/build/build.log; echo "error: ff-c++ made no $(PLUGIN)" >&2; exit 1; }
+# The compiler command the objects were made with, rewritten (as this Makefile is read, by the
+# make that builds them) only when it changes: a change (PLUGIN_DEBUG) remakes them all.
+ifneq ($(filter plugin-files,$(MAKECMDGOALS)),)
+ifneq ($(shell cat $(PLUGIN_FLAGS) 2>/dev/null),$(PLUGIN_CXX))
+$(shell mkdir -p plugin/build && echo '$(PLUGIN_CXX)' > $(PLUGIN_FLAGS))
+endif
+endif
+# A unit's dependency list names the files as the compiler saw them from plugin/build (../core/x):
+# rewritten from the checkout's root, where this Makefile reads it (only a path that starts with
+# ../: Eigen's own names hold /../ inside).
+plugin/build/%.o: plugin/glue/%.cpp $(PLUGIN_FLAGS)
+	@echo "compiling plugin/glue/$*.cpp$(if $(filter step,$*), (the step solver: the longest unit, about 45 s),)"
+	@cd plugin/build && ff-c++ "CXX=$(PLUGIN_CXX)" -c ../glue/$*.cpp -I/usr/include/eigen3 -I/usr/include/suitesparse -I.. \
+	  > $*.log 2>&1 || { cat $*.log; echo "error: compiling plugin/glue/$*.cpp failed (plugin/build/$*.log)" >&2; exit 1; }
+	@sed -i -e 's#\(^\| \)\.\./#\1plugin/#g' -e 's#^$*\.o:#plugin/build/$*.o:#' plugin/build/$*.d
+-include $(wildcard plugin/build/*.d)
+$(PLUGIN): $(PLUGIN_OBJECTS)
+	@cd plugin/build && ff-c++ "CXX=$(PLUGIN_CXX)" $(notdir $(PLUGIN_OBJECTS)) -o sma -lcholmod > link.log 2>&1 \
+	  || { cat link.log; echo "error: linking the plugin failed (plugin/build/link.log)" >&2; exit 1; }
+	@test -f $(PLUGIN) || { cat plugin/build/link.log; echo "error: ff-c++ made no $(PLUGIN)" >&2; exit 1; }
 	@echo "built $(PLUGIN)"
 
 meshes: deps $(MESHES)

@@ -96,7 +96,7 @@ inline void phase_labels(span<const double> chi, span<double> labels) {
   for (std::size_t i = 0; i < chi.size(); ++i) labels[i] = chi[i] > 0 ? 1. : (chi[i] < 0 ? 2. : 0.);
 }
 
-// The step solver's data array (plugin/sma.cpp StepSolveFraction, n points, `nodes` heat nodes,
+// The step solver's data array (plugin/glue/step.cpp StepSolveFraction, n points, `nodes` heat nodes,
 // `dofs` displacement dofs): [area | kappa | threshold offset | chi at the step's start | b at the
 // step's start | heat right side | heat free mask | force | free dofs], segments of n, n, n, n, n,
 // nodes, nodes, dofs, dofs values. Writes the five a step changes (chi, b, the heat right side, its

@@ -1,0 +1,176 @@
+// FreeFEM glue of the fraction model's step solver (plugin/core/step_newton.hpp: the globalised
+// Newton method of a whole time step), on the factorisations of solvers.cpp (glue/slots.hpp). A
+// unit of its own: the step solver's header alone is about 30 s of compilation, which the other
+// units do not wait for. The functions are listed in load.cpp.
+
+#include "glue/glue.hpp"
+#include "glue/slots.hpp"
+
+#include "core/material.hpp"
+#include "core/step_newton.hpp"
+
+namespace sma_glue {
+namespace {
+
+// The operators of the fraction model's step solver (StepOperatorsSet), by slot, and the reason
+// the last StepSolveFraction stopped unconverged.
+std::vector<std::unique_ptr<sma::StepProblem>>& StepSlots() {
+  static std::vector<std::unique_ptr<sma::StepProblem>> slots;
+  return slots;
+}
+std::string& StepFailure() {
+  static std::string failure;
+  return failure;
+}
+
+long StepOperatorsSet(long const& handle, Matrice_Creuse<double>* const& B, Matrice_Creuse<double>* const& Q,
+                      Matrice_Creuse<double>* const& interp) {
+  return guarded("StepOperatorsSet", [&] {
+    long slot = handle;
+    if (slot < 0) {
+      StepSlots().push_back(std::make_unique<sma::StepProblem>());
+      slot = (long)StepSlots().size() - 1;
+    }
+    if (slot >= (long)StepSlots().size()) throw std::invalid_argument("no step slot " + std::to_string(slot));
+    sma::StepProblem& p = *StepSlots()[slot];
+    p.load = ToEigen(B);
+    p.latent = ToEigen(Q);
+    p.interp = ToEigen(interp);
+    p.operators_version = NewVersion();
+    return slot;
+  });
+}
+
+// a[start .. start + length) into `out`, whose storage is reused when its size is right (the step
+// problem's vectors, refilled at every step: a new vector each cost an allocation and a release).
+void SegmentInto(Eigen::VectorXd& out, KN<double>* a, long start, long length, const char* what) {
+  if (start + length > a->N())
+    throw std::invalid_argument(std::string(what) + ": " + std::to_string(a->N()) + " values, " +
+                                std::to_string(start + length) + " needed");
+  out.resize(length);
+  // (a copy of the contiguous values, vectorised: an element loop cost 0.6 % of the default run)
+  if (length > 0) out = Eigen::Map<const Eigen::VectorXd>(&(*a)[start], length);
+}
+// The same as a new vector.
+Eigen::VectorXd Segment(KN<double>* a, long start, long length, const char* what) {
+  Eigen::VectorXd out;
+  SegmentInto(out, a, start, length, what);
+  return out;
+}
+
+// One time step of the fraction model (plugin/core/step_newton.hpp). settings = [operator slot,
+// heat factor slot, stiffness factor slot, rho, a, L, T0, Tc, laminate, rho L / dt, tol, maxit,
+// omega, psor tol, psor maxit, polish, slip tol, slip maxit, dissipation k, k / dt]; data = [area; kappa; threshold
+// offset; chi at the step's start; b_start] (n points each), [heat right side without the
+// latent load; free-node mask] (per heat node), [load f; free-dof mask] (per dof) in one array
+// (FreeFEM's plugin functions take at most 8 arguments); table = contact.idp's contactTable
+// (column 4, the slip thresholds, in/out); contact = [tangentFree; mu; r (2 per node, in/out)];
+// chi in/out; T, u out; stats = [converged, iterations, gradient steps, evaluations, products,
+// heat solves, stiffness solves, PSOR sweeps, slip iterations, residual, curvature moves, saddle
+// moves, dense Newton moves]. Returns the iterations.
+// settings[20] (optional) = 1: a step that does not converge leaves chi, u and the table's slip
+// thresholds as they came in (the step's start, for the caller's fall-back: no copies of them).
+long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM<double>* const& table,
+                       KN<double>* const& contact, KN<double>* const& chi, KN<double>* const& T,
+                       KN<double>* const& u, KN<double>* const& stats) {
+  return guarded("StepSolveFraction", [&] {
+    if (settings->N() != 20 && settings->N() != 21) throw std::invalid_argument("settings must have 20 or 21 values");
+    const bool keepStartUnconverged = settings->N() == 21 && (*settings)[20] != 0;
+    const long slot = lrint((*settings)[0]);
+    if (slot < 0 || slot >= (long)StepSlots().size())
+      throw std::invalid_argument("no step operators in slot " + std::to_string(slot) + " (StepOperatorsSet first)");
+    sma::StepProblem& p = *StepSlots()[slot];
+    FactorSlot& heatSlot = SlotAt(lrint((*settings)[1]));
+    FactorSlot& mechSlot = SlotAt(lrint((*settings)[2]));
+    p.heat = &heatSlot.factor;
+    p.stiffness = &mechSlot.factor;
+    p.contact = mechSlot.contact.get();
+    p.mechanics_version = mechSlot.version;
+    p.law = sma::ThermalLaw{(*settings)[3], (*settings)[4], (*settings)[5], (*settings)[6], (*settings)[7]};
+    p.laminate = (*settings)[8];
+    p.latent_scale = (*settings)[9];
+    sma::StepSettings set;
+    set.tol = (*settings)[10];
+    set.maxit = (int)lrint((*settings)[11]);
+    if (std::getenv("SMA_STEP_TRACE")) set.trace = stderr;  // docs/parameters.md, "Step solver"
+    p.psor.omega = (*settings)[12];
+    p.psor.tol = (*settings)[13];
+    p.psor.maxit = (int)lrint((*settings)[14]);
+    p.psor.polish = (int)lrint((*settings)[15]);
+    p.slip_tol = (*settings)[16];
+    p.slip_maxit = (int)lrint((*settings)[17]);
+    p.dissipation = (*settings)[18];
+    p.dissipation_scale = (*settings)[19];
+    // m contact nodes: contact's length / 4 (a scene without contact passes none, and its table
+    // is not read).
+    const long n = chi->N(), nodes = p.heat->size(), dofs = p.stiffness->size(), m = contact->N() / 4;
+    if (data->N() != 5 * n + 2 * nodes + 2 * dofs)
+      throw std::invalid_argument("data must hold 5 arrays of " + std::to_string(n) + " points, 2 of " +
+                                  std::to_string(nodes) + " heat nodes and 2 of " + std::to_string(dofs) +
+                                  " dofs; it has " + std::to_string(data->N()) + " values");
+    SegmentInto(p.area, data, 0, n, "data");
+    SegmentInto(p.kappa, data, n, n, "data");
+    SegmentInto(p.threshold_offset, data, 2 * n, n, "data");
+    SegmentInto(p.chi_start, data, 3 * n, n, "data");
+    SegmentInto(p.b_start, data, 4 * n, n, "data");
+    SegmentInto(p.heat_rhs, data, 5 * n, nodes, "data");
+    SegmentInto(p.heat_mask, data, 5 * n + nodes, nodes, "data");
+    SegmentInto(p.force, data, 5 * n + 2 * nodes, dofs, "data");
+    SegmentInto(p.free, data, 5 * n + 2 * nodes + dofs, dofs, "data");
+    if (m > 0 && (table->M() != 6 || table->N() != m))
+      throw std::invalid_argument("the contact table must have 6 columns and a row per contact node (" +
+                                  std::to_string(m) + ", from contact's length)");
+    if (contact->N() != 4 * m) throw std::invalid_argument("contact must hold tangentFree, mu and r: 4 values per node");
+    if (stats->N() != 14) throw std::invalid_argument("stats must have 14 entries");
+    p.gap.resize(m);
+    p.slip_reference.resize(m);
+    Eigen::VectorXd threshold(m);
+    for (long i = 0; i < m; ++i) {
+      p.gap[i] = (*table)(i, 3L);
+      threshold[i] = (*table)(i, 4L);
+      p.slip_reference[i] = (*table)(i, 5L);
+    }
+    SegmentInto(p.tangent_free, contact, 0, m, "contact");
+    SegmentInto(p.mu, contact, m, m, "contact");
+    Eigen::VectorXd r = Segment(contact, 2 * m, 2 * m, "contact");
+    if (!p.contact && m > 0) throw std::invalid_argument("the stiffness slot has no contact problem (SpdDelassus first)");
+    Eigen::VectorXd x = Segment(chi, 0, n, "chi"), temperature(nodes), displacement(dofs);
+    const sma::StepResult res = sma::solve_fraction_step(p, set, x, r, threshold, temperature, displacement);
+    if (T->N() != nodes) T->resize(nodes);
+    for (long i = 0; i < nodes; ++i) (*T)[i] = temperature[i];
+    for (long i = 0; i < 2 * m; ++i) (*contact)[2 * m + i] = r[i];
+    if (res.converged || !keepStartUnconverged) {
+      for (long i = 0; i < n; ++i) (*chi)[i] = x[i];
+      if (u->N() != dofs) u->resize(dofs);
+      for (long i = 0; i < dofs; ++i) (*u)[i] = displacement[i];
+      for (long i = 0; i < m; ++i) (*table)(i, 4L) = threshold[i];
+    }
+    const double values[14] = {res.converged ? 1.0 : 0.0, (double)res.iterations, (double)res.gradient_steps,
+                               (double)res.evaluations, (double)res.products, (double)res.heat_solves,
+                               (double)res.stiffness_solves, (double)res.psor_sweeps, (double)res.slip_iterations,
+                               res.residual, (double)res.curvature_steps, (double)res.saddle_steps,
+                               (double)res.dense_steps, (double)res.reused_solves};
+    for (int k = 0; k < 14; ++k) (*stats)[k] = values[k];
+    StepFailure() = res.failure;
+    return (long)res.iterations;
+  });
+}
+
+// The reason the last StepSolveFraction stopped unconverged ("" after a converged step); the
+// argument is unused (FreeFEM's string functions of no argument need a Stack-less form).
+string* StepFailureMessage(Stack stack, long const&) { return NewString(stack, StepFailure()); }
+
+}  // namespace
+
+void AddStepFunctions() {
+  typedef KN<double>* A;
+  typedef string* S;
+  Global.Add("StepOperatorsSet", "(",
+             new OneOperator4_<long, long, Matrice_Creuse<double>*, Matrice_Creuse<double>*,
+                               Matrice_Creuse<double>*>(StepOperatorsSet));
+  Global.Add("StepSolveFraction", "(",
+             new OneOperator8_<long, A, A, KNM<double>*, A, A, A, A, A>(StepSolveFraction));
+  Global.Add("StepFailureMessage", "(", new OneOperator1s_<S, long>(StepFailureMessage));
+}
+
+}  // namespace sma_glue
