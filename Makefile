@@ -13,14 +13,29 @@
 #   make ensemble [NP=2] [SEEDS=8] [OUT=dir] [ARGS=...]  Monte Carlo over seeds of sleeve-random-threshold on MPI
 #   make docs                                            regenerate docs/parameter-reference.md (scenes' -help)
 #                                                        and docs/python-api.md (the sma package's docstrings)
-#   make python                                          install the sma package (python/sma) for the user,
-#                                                        editable and offline: `import sma` from anywhere
+#   make lab                                             the students' notebook (docs/tutorial/sleeve-lab.ipynb) in
+#                                                        Jupyter, on this checkout's package (installs jupyter-notebook)
+#   make python                                          only when asked: install the sma package (python/sma) for
+#                                                        the user, editable and offline: `import sma` from anywhere
+#   make help                                            this list, the scenes and variants, and where to start
 SHELL := /bin/bash
 .DEFAULT_GOAL := run
 
 SCENES := $(sort $(basename $(notdir $(wildcard edp/scenes/*.edp))))
 # The variants of docs/variants.md run the same way (make run SCENE=<variant>), into results/variants/.
 VARIANTS := $(sort $(basename $(notdir $(wildcard edp/variants/*.edp))))
+# Every goal on the command line must be a target: a scene given as a goal (make run sleeve-radial)
+# ran the default scene, replacing its results, and only then failed. Refused before anything runs.
+# (File targets, with a /, pass: make meshes/sleeve-nr27.msh.)
+TARGETS := run test figures bench reference paper-scale ensemble docs deps plugin plugin-files meshes clean \
+           check-scene sweep python lab help
+STRAY_GOALS := $(filter-out $(TARGETS),$(foreach g,$(MAKECMDGOALS),$(if $(findstring /,$(g)),,$(g))))
+ifneq ($(STRAY_GOALS),)
+$(shell g='$(firstword $(STRAY_GOALS))'; if [[ " $(SCENES) $(VARIANTS) " == *" $$g "* ]]; then \
+  echo "error: '$$g' is a scene, not a make target: make run SCENE=$$g (make help lists the targets)" >&2; \
+  else echo "error: unknown make target '$$g' (make help lists the targets, the scenes and the variants)" >&2; fi)
+$(error stopped before anything ran)
+endif
 SCENE ?= sleeve-circular
 ARGS ?=
 PYTHON := /usr/bin/python3
@@ -106,7 +121,7 @@ pipe_opt_wall := $(PIPE_RADIUS) -setnumber Ri 0.045 -setnumber lc 0.0005
 sliver_opt_thin := $(SLEEVE_RING) -setnumber eps 1.3e-5
 sliver_opt_degenerate := $(SLEEVE_RING) -setnumber eps 1e-8
 
-.PHONY: run test figures bench reference paper-scale ensemble docs deps plugin plugin-files meshes clean check-scene sweep python
+.PHONY: run test figures bench reference paper-scale ensemble docs deps plugin plugin-files meshes clean check-scene sweep python lab help
 # The scenes behind the paper's figures (docs/figures.md), run at their defaults by make figures.
 FIGURE_SCENES := beam sleeve-circular sleeve-circular-single sleeve-circular-gvar sleeve-offset \
                  sleeve-elliptic sleeve-elliptic-friction sleeve-random-threshold
@@ -118,7 +133,10 @@ deps:
 # seen at once, and the package finds this checkout's scenes), with Debian's pip and setuptools,
 # offline; --break-system-packages because Debian marks its Python externally managed (PEP 668):
 # a --user install with no dependencies touches only ~/.local (docs/parameters.md, "The Python
-# package"). Skipped when `import sma` from another folder already gives this checkout.
+# package"). Skipped when `import sma` from another folder already gives this checkout. No other
+# target runs it: make never writes the user's site-packages unless asked (the tools, the tests
+# and `make lab` put this checkout's python/ first on their path; two checkouts took the package
+# from each other at every make).
 python: deps
 	@here=$$(pwd -P); cd / && if [ "$$($(PYTHON) -c 'import sma; print(sma.ROOT)' 2>/dev/null)" != "$$here" ]; then \
 	  cd "$$here" && PIP_ROOT_USER_ACTION=ignore $(PYTHON) -m pip install --user --break-system-packages --no-index \
@@ -209,19 +227,21 @@ RUN_PLOT = $(if $(wildcard tools/plot/plot_$(SCENE).py),$(PYTHON) tools/plot/plo
 # a `$(...)` in it is a character, not a command (docs/errors.md). run_scene.py draws the figures
 # from the folder the run wrote (a -out among ARGS included).
 run: export RUN_ARGS := $(value ARGS)
-run: check-scene plugin meshes python
+run: check-scene plugin meshes
 	@$(PYTHON) tools/run_scene.py --env-args RUN_ARGS $(RUN_SCRIPT) $(RUN_RESULTS) $(RUN_PLOT)
 
 # A checkout copied or moved elsewhere keeps a build/CMakeCache.txt naming the old folder, which
 # cmake refuses: such a build/ is another checkout's and is rebuilt from scratch.
-test: plugin meshes python
+test: plugin meshes
 	@if [ -f build/CMakeCache.txt ] && ! grep -qxF "CMAKE_HOME_DIRECTORY:INTERNAL=$$(pwd -P)" build/CMakeCache.txt; then \
 	  echo "build/ was configured for another folder ($$(sed -n 's/^CMAKE_HOME_DIRECTORY:INTERNAL=//p' build/CMakeCache.txt)): rebuilding it"; \
 	  rm -rf build; fi
 	@mkdir -p build && cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > build/cmake.log 2>&1 || \
 	  { mkdir -p build; cmake -S . -B build -DCMAKE_BUILD_TYPE=Release; }
-	@cmake --build build -j2
-	@cd build && ctest --output-on-failure -j2
+	@echo "make test: building the C++ unit tests (GoogleTest: about 3 min the first time on 2 cores, then only what changed)"
+	@cmake --build build -j$(CORES)
+	@echo "make test: running every test with ctest on $(CORES) cores (about 7 min on 2; each line is one test as it ends)"
+	@cd build && ctest --output-on-failure -j$(CORES)
 
 # A parameter sweep (tools/sweep.py): each value of PARAM run in parallel (JOBS, at most the cores),
 # then results/sweeps/<scene>-<param>/table.csv and overlay figures. Nothing the user types is
@@ -241,7 +261,7 @@ sweep: export SWEEP_VALUES2 := $(value VALUES2)
 sweep: export SWEEP_ARGS := $(value ARGS)
 sweep: export SWEEP_JOBS := $(or $(value JOBS),2)
 sweep: export SWEEP_DIR := $(if $(filter command line environment environment override override,$(origin OUT)),$(value OUT),$(SWEEP_OUT_DEFAULT))
-sweep: check-scene plugin meshes python
+sweep: check-scene plugin meshes
 	@set -f; if [ -z "$$SWEEP_PARAM" ] || [ -z "$$SWEEP_VALUES" ]; then \
 	  echo "error: make sweep needs PARAM=<option without its dash> and VALUES='<v1> <v2> ...'" >&2; exit 2; fi; \
 	  second=(); if [ -n "$$SWEEP_PARAM2" ] || [ -n "$$SWEEP_VALUES2" ]; then \
@@ -288,6 +308,25 @@ ensemble: plugin meshes
 	  $(PYTHON) tools/run_scene.py --env-args RUN_ARGS --env-out RUN_OUT --mpi "$$ENSEMBLE_NP" --seeds "$$ENSEMBLE_SEEDS" \
 	  edp/ensemble/sleeve-random-ensemble.edp results/sleeve-random-ensemble \
 	  $(PYTHON) tools/plot/plot_ensemble.py
+
+# The lab notebook in Jupyter's browser front end (Debian's jupyter-notebook, installed here when
+# missing: make deps does not, the tests execute the notebook headless), with this checkout's
+# package first on the kernel's path. Root needs --allow-root.
+lab: plugin meshes
+	@tools/install-deps.sh jupyter-notebook
+	@PYTHONPATH="$$(pwd -P)/python$${PYTHONPATH:+:$$PYTHONPATH}" jupyter notebook \
+	  $$([ "$$(id -u)" = 0 ] && echo --allow-root) docs/tutorial/sleeve-lab.ipynb
+
+help:
+	@echo "Where to start:"
+	@echo "  1. make run                  the default scene (sleeve-circular, the paper's Fig. 12): results/sleeve-circular/,"
+	@echo "                               its figures *.png and summary.json (the first run builds the plugin: about 90 s)"
+	@echo "  2. make run SCENE=sleeve-radial ARGS='-help'   a scene's options; then ARGS='-g 1000 -out results/g1000'"
+	@echo "  3. make lab                  the students' notebook in Jupyter (README.md, docs/tutorial/)"
+	@echo "Targets:"
+	@sed -n '2,/^SHELL/ s/^#//p' Makefile | sed '/^ *make help/d'
+	@echo "Scenes (make run SCENE=...): $(SCENES)" | fold -s -w 100
+	@echo "Variants (make run SCENE=..., docs/variants.md): $(VARIANTS)" | fold -s -w 100
 
 figures: test
 	@for scene in $(FIGURE_SCENES); do \

@@ -4,8 +4,9 @@
   (a) installable offline by Debian's pip and setuptools, as `make python` does (the same command,
       into a temporary PYTHONUSERBASE: the user's own install is not touched), and then
       `import sma` works for /usr/bin/python3 from another folder without touching sys.path; its
-      sma.ROOT is this checkout. `import sma` from another folder works with the user's install too
-      (make test runs `make python` first);
+      sma.ROOT is this checkout. No target but `make python` installs it: `make -n` of run, test,
+      sweep, ensemble, figures and lab prints no pip command (one checkout, one package: two
+      checkouts took the package from each other at every make);
   (b) from that other folder, in that process: sma.run of sleeve-radial -steps 60 with a relative
       `out` returns the absolute folder under the repository, and sma.read of it gives the summary
       and history.csv as a DataFrame: one row per step, the last time tend, the last mean pressure
@@ -101,12 +102,15 @@ def install_and_import(tmp):
           f"(a) pip install --user -e python/ offline into a fresh user base (exit {pip.returncode}), then "
           f"`import sma` from {elsewhere} without sys.path: sma.ROOT {got.get('root')} "
           + (pip.stderr.strip()[-300:] + child.stderr.strip()[-300:] if not got else ""))
-    env_user = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "PYTHONHOME", "PYTHONUSERBASE")}
-    user = subprocess.run([PYTHON, "-c", "import sma; print(sma.ROOT)"], cwd=elsewhere, env=env_user,
-                          capture_output=True, text=True, timeout=60)
-    check(user.returncode == 0 and os.path.isfile(os.path.join(user.stdout.strip(), "tools", "ff")),
-          f"(a) the user's install (make python): `import sma` from another folder gives the checkout "
-          f"{user.stdout.strip() or user.stderr.strip()[-200:]}")
+    installing = {}
+    for goal in (["run"], ["test"], ["sweep", "SCENE=sleeve-radial", "PARAM=g", "VALUES=500"], ["ensemble"], ["figures"],
+                 ["lab"], ["python"]):
+        dry = subprocess.run(["make", "-n", "--no-print-directory", *goal], cwd=ROOT, capture_output=True, text=True,
+                             timeout=120)
+        installing[goal[0]] = "pip install" in dry.stdout
+    check(installing.pop("python") and not any(installing.values()),
+          f"(a) only `make python` installs the package for the user: `make -n` prints a pip install for "
+          f"{[g for g, v in installing.items() if v] or 'no other target'} (run, test, sweep, ensemble, figures, lab)")
     if got:
         check(got["out"] == os.path.join(OUT, "radial-relative") and os.path.isabs(got["out"])
               and got["rows"] == got["n_steps"] == 60 and got["t_last"] == got["tend"] and got["p_last"] == got["final"],

@@ -19,10 +19,13 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 # /usr/bin/python3): the lab notebook docs/tutorial/sleeve-lab.ipynb, executed headless by
 # tests/tutorial_test.py (`jupyter nbconvert --to notebook --execute`): 51 packages, 27 MB installed
 # with IPython, zmq and tornado on Debian 12. jupyter-notebook (the browser front end) is not
-# needed for that; a student who opens the notebook installs it.
+# needed for that; `make lab` installs it (tools/install-deps.sh jupyter-notebook).
 packages="freefem++ libfreefem++-dev gmsh libeigen3-dev libsuitesparse-dev libgtest-dev libsiconos-numerics-dev cmake make g++
 python3-matplotlib python3-numpy python3-vtk9 openmpi-bin python3-getfem python3-pandas python3-pip
 python3-setuptools python3-wheel jupyter-nbconvert python3-ipykernel python3-nbformat python3-nbclient"
+
+# Arguments name packages wanted besides (make lab: jupyter-notebook, the browser front end).
+packages="$packages $*"
 
 missing=""
 for p in $packages; do

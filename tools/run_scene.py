@@ -57,6 +57,31 @@ def parse(argv):
     return opts, argv
 
 
+# Options that change how a run reports, not what it computes: they do not name its folder.
+REPORTING = {"-quiet", "-vtkevery", "-out", "-help", "-checkonly"}
+
+
+def named_folder(default, words):
+    """The folder of a run given options that change its results and no -out: DEFAULT@name=value,...
+    (results/sleeve-circular@g=1000,steps=300), so that it never replaces the defaults' run (a
+    variant and its baseline side by side); None when the words change nothing (or are not pairs:
+    the scene names the fault)."""
+    if len(words) % 2 or any(not w.startswith("-") for w in words[::2]) or "-out" in words[::2]:
+        return None
+    named = []
+    for name, value in zip(words[::2], words[1::2]):
+        if name not in REPORTING:
+            text = "".join(c if c.isalnum() or c in ".+-" else "_" for c in value)
+            named.append(f"{name[1:]}={text}")
+    if not named:
+        return None
+    suffix = ",".join(named)
+    if len(suffix) > 100:  # a folder name stays readable and within the file system's limit
+        suffix = suffix[:80] + ",and-" + str(len(named)) + "-options-" + \
+            format(sum(ord(c) * (i + 1) for i, c in enumerate(suffix)) % 16**8, "08x")
+    return default + "@" + suffix
+
+
 def output_folder(words, default):
     """The value of the last -out among `words`, or `default`."""
     out = default
@@ -98,6 +123,11 @@ def main(argv):
         print(f"error: '{home[0]}': ~ is not expanded (no shell reads ARGS or OUT): give the folder's full "
               "path, e.g. $HOME/...", file=sys.stderr)
         return 2
+    named = None if opts["mpi"] is not None or "-help" in words else named_folder(default_out, user)
+    if named:
+        print(f"{os.path.basename(default_out)} with {' '.join(user)}: results in {named}/ (the defaults' "
+              f"{default_out}/ is left as it is; -out names another folder)")
+        words = words + ["-out", named]
     try:
         run = children.run(launcher + [script] + words)
     except OSError as e:  # the launcher itself missing (mpiexec, FreeFem++-mpi not installed)

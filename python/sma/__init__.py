@@ -10,9 +10,10 @@
                       fixed={"steps": 300}, out="results/sweeps/lab")
     sma.plot(table, "final_pressure_mean_Pa")
 
-Installed editable for the user by `make python` (docs/parameters.md says how and why); it runs
-the scenes of the checkout it lives in (sma.ROOT) through tools/ff, whatever the working
-directory. docs/python-api.md lists every public function (generated from these docstrings);
+This checkout's python/ on the path (PYTHONPATH, as the tools, the tests and `make lab` do), or
+installed editable for the user by `make python` when asked (docs/parameters.md says how and
+why); it runs the scenes of the checkout it lives in (sma.ROOT) through tools/ff, whatever the
+working directory. docs/python-api.md lists every public function (generated from these docstrings);
 docs/outputs.md every file, column and unit.
 """
 import os as _os

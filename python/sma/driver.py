@@ -94,10 +94,16 @@ def is_switch(option):
     return option["type"] == "int" and option["meaning"].startswith("1:") and option["default"] in ("0", "1")
 
 
+def is_temperature(option):
+    """An absolute temperature option (kelvin): its meaning starts "K:" or holds "(K)"."""
+    return option["meaning"].startswith("K:") or "(K)" in option["meaning"]
+
+
 def word(scene, name, value):
     """An option value as FreeFEM's getARGV reads it, checked against the option's type (from the
     scene's -help): an int takes a Python int (or a numeric string of one), a real a finite int or
-    float (or such a string), a string a str; True/False only for a switch (is_switch); None, lists
+    float (or such a string; a temperature's string may end in its unit, "20C" or "293.15K"), a
+    string a str; True/False only for a switch (is_switch); None, lists
     and other objects are refused, naming the option. Reals in full precision (repr)."""
     option = options(scene)[name]
     kind = option["type"]
@@ -120,6 +126,12 @@ def word(scene, name, value):
             # run would print them, exit 0 and compute nothing
             refuse("an option name, not a value")
         return value
+    if isinstance(value, str) and kind == "real" and is_temperature(option):
+        # A temperature may carry its unit, as on the command line ("20C", "293.15K"): passed on as
+        # written, the scene reads it in kelvin (edp/lib/errors.idp KelvinWord).
+        text = value.strip()
+        if re.match(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?[CcKk]\Z", text):
+            return text
     if isinstance(value, str):
         text = value.strip()
         pattern = r"[+-]?\d+\Z" if kind == "int" else r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?\Z"

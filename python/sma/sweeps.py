@@ -409,9 +409,23 @@ def check_grid(scene, grid, fixed):
         if repeated:
             raise SceneError(f"the value(s) {' '.join(repeated)} of -{param} are given twice (one folder each)")
     for param in params:  # each value against the option's type, before anything runs
-        for v in grid[param]:
-            driver.word(scene, param, v)
+        read = {}
+        for t, v in zip(texts[param], grid[param]):
+            same = read.setdefault(value_as_read(scene, param, driver.word(scene, param, v)), t)
+            if same != t:  # 500 and 5e2, 20C and 293.15: one run, two folders, two rows of one value
+                raise SceneError(f"the values {same} and {t} of -{param} are the same value: give it once")
     return params, texts
+
+
+def value_as_read(scene, name, text):
+    """The value a scene reads from the option word `text`: a number for a number (500 and 5e2 are
+    one), a temperature with its unit in kelvin (20C is 293.15), else the word itself."""
+    option = driver.options(scene)[name]
+    if option["type"] == "string":
+        return text
+    if option["type"] == "real" and driver.is_temperature(option) and text[-1:] in "CcKk":
+        return float(text[:-1]) + (273.15 if text[-1:] in "Cc" else 0.0)
+    return float(text)
 
 
 def grid_runs(params, grid, jobs):

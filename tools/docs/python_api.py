@@ -67,7 +67,8 @@ def undocumented():
 def markdown():
     lines = ["# The sma Python package (python/sma)", "",
              "Generated from the package's docstrings by `tools/docs/python_api.py` (`make docs`); do not edit.",
-             "Install: `make python` (docs/parameters.md, \"The Python package\"); files, columns and units:",
+             "Use: this checkout's python/ on the path, or `make python` to install it for the user",
+             "(docs/parameters.md, \"The Python package\"); files, columns and units:",
              "docs/outputs.md.", "", doc(sma), "", "## Contents", ""]
     lines += [f"- [`{n}`](#{n.lower()})" for n in sma.__all__]
     for name in sma.__all__:
