@@ -414,8 +414,10 @@ inline std::string busy_inside(const fs::path& path, long pid, int depth = 0) {
 //  - a live run's lock in it: refused (two runs would mix their files);
 //  - else the lock is taken (a dead process's lock is replaced). A fresh run (resume false) then
 //    removes every entry the manifest lists, whichever scene wrote them, and starts a manifest of
-//    its own; a resumed run must find its own scene's manifest and removes only the listed
-//    entries matching the shell patterns of `patterns` (what its remaining steps rewrite);
+//    its own, but for the runs of their own inside it, kept and listed again unless it owns them
+//    (owns_nested_runs: a sweep, an ensemble); a resumed run must find its own scene's manifest
+//    and removes only the listed entries matching the shell patterns of `patterns` (what its
+//    remaining steps rewrite);
 //  - a folder inside another results folder is listed in that one's manifest as `name/`.
 // The caller removes the lock with release_results when the run ends, however it ends.
 inline std::string claim_locked(const fs::path& d, const std::string& dir, const std::string& scene, long pid,
@@ -502,6 +504,16 @@ inline std::string claim_results(const std::string& dir, const std::string& scen
   return error;
 }
 
+// Whether a run of `scene` makes the results folders inside its own (a sweep's runs, "sweep
+// <scene>"; an ensemble's seeds, "<name>-ensemble"): its fresh claim removes them with its other
+// entries. Any other run's folder may hold a run of its own that someone put there (-out
+// results/x/sub): the folder's next run keeps it, listed again (it removed a finished run).
+inline bool owns_nested_runs(const std::string& scene) {
+  const std::string ensemble = "-ensemble";
+  return scene.compare(0, 6, "sweep ") == 0 ||
+         (scene.size() > ensemble.size() && scene.compare(scene.size() - ensemble.size(), ensemble.size(), ensemble) == 0);
+}
+
 // The part of claim_results done under the folder's lock.
 inline std::string claim_locked(const fs::path& d, const std::string& dir, const std::string& scene, long pid,
                                 bool resume, const std::string& patterns) {
@@ -514,11 +526,20 @@ inline std::string claim_locked(const fs::path& d, const std::string& dir, const
   // foreign_entry found no other): every one for a fresh run, those matching `patterns` for a
   // resumed one.
   std::vector<fs::path> doomed;
+  std::vector<std::string> kept_runs;  // results folders inside, runs of their own (owns_nested_runs)
   if (resume) {
     if (auto e = matching_entries(d.string(), patterns, doomed); !e.empty()) return e;
   } else {
-    for (fs::directory_iterator it(d, ec), end; !ec && it != end; it.increment(ec))
-      if (!bookkeeping(it->path().filename().string())) doomed.push_back(it->path());
+    for (fs::directory_iterator it(d, ec), end; !ec && it != end; it.increment(ec)) {
+      const std::string name = it->path().filename().string();
+      if (bookkeeping(name)) continue;
+      std::error_code nested;
+      if (!owns_nested_runs(scene) && fs::is_directory(fs::symlink_status(it->path(), nested)) &&
+          fs::exists(it->path() / results_marker, nested))
+        kept_runs.push_back(name + "/");
+      else
+        doomed.push_back(it->path());
+    }
     if (ec) return "cannot list " + dir + ": " + reason(ec);
   }
   for (const auto& path : doomed)
@@ -534,8 +555,11 @@ inline std::string claim_locked(const fs::path& d, const std::string& dir, const
         if (owner != pid && !process_alive(owner)) fs::remove(it->path(), ec);
       }
     }
-  if (!resume)
+  if (!resume) {
     if (auto e = write_manifest(d, scene, pid); !e.empty()) return e;
+    for (const std::string& run : kept_runs)
+      if (auto e = append_manifest(d, run); !e.empty()) return e;
+  }
   return {};
 }
 

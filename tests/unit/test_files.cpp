@@ -178,6 +178,38 @@ TEST(Files, AFolderOfAnOlderVersionIsTakenOnlyWithItsOwnOutputs) {
   files::release_results(d, getpid());
 }
 
+// A run put inside another scene's folder (-out results/x/sub) is a run of its own: the folder's
+// next run keeps it and lists it again (it removed it with its own files); a sweep's or an
+// ensemble's next run removes the runs it made.
+TEST(Files, ARunInsideAScenesFolderOutlivesTheFoldersNextRun) {
+  Scratch t;
+  const std::string scene = t / "radial", inner = t / "radial/sub";
+  files::RecordedResults known;
+  ASSERT_EQ(files::claim_results(scene, "sleeve-radial", getpid()), "");
+  ASSERT_EQ(files::record_result(scene + "/summary.json", known), "");
+  touch(scene + "/summary.json");
+  ASSERT_EQ(files::claim_results(inner, "sleeve-radial", getpid()), "");
+  files::RecordedResults known_inner;
+  ASSERT_EQ(files::record_result(inner + "/summary.json", known_inner), "");
+  touch(inner + "/summary.json");
+  files::release_results(inner, getpid());
+  files::release_results(scene, getpid());
+  ASSERT_EQ(files::claim_results(scene, "sleeve-radial", getpid()), "");
+  EXPECT_FALSE(fs::exists(scene + "/summary.json"));
+  EXPECT_TRUE(fs::exists(inner + "/summary.json"));
+  files::Manifest m;
+  ASSERT_EQ(files::read_manifest(scene, m), "");
+  EXPECT_EQ(m.entries, std::vector<std::string>{"sub/"});
+  files::release_results(scene, getpid());
+  // Listed again, it is not foreign at the claim after: the same again.
+  ASSERT_EQ(files::claim_results(scene, "sleeve-radial", getpid()), "");
+  EXPECT_TRUE(fs::exists(inner + "/summary.json"));
+  files::release_results(scene, getpid());
+  EXPECT_TRUE(files::owns_nested_runs("sweep beam"));
+  EXPECT_TRUE(files::owns_nested_runs("sleeve-random-ensemble"));
+  EXPECT_FALSE(files::owns_nested_runs("sleeve-radial"));
+}
+
 // A results folder inside another (a sweep's runs) is listed in the outer manifest as `name/` and
 // checked against its own: a user's file inside it keeps the outer folder refused.
 TEST(Files, NestedResultsFoldersAreCheckedByTheirOwnManifest) {
