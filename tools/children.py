@@ -8,3 +8,6 @@ _PYTHON = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 if _PYTHON not in sys.path:
     sys.path.insert(0, _PYTHON)
 from sma.children import *  # noqa: E402,F401,F403
+from sma.errors import tool_errors_when_run_from  # noqa: E402
+
+tool_errors_when_run_from(__file__)

@@ -34,5 +34,20 @@ from .repository import FF, ROOT
 from .sweeps import plot, read_sweep, sweep
 from .vtu import Fields, read_pvd, read_vtu
 
+from .errors import guarded as _guarded
+
+# Every public function and method: its failures are SceneErrors naming it (errors.py says which).
+# The guarded function replaces the plain one in its own module too: the tools' names for the
+# modules (tools/sma_driver.py, ...) and the package's own calls get the same object.
+for _name in ("run", "read", "options", "scenes", "script", "check_option", "read_csv", "frame", "read_vtu",
+              "read_pvd", "sweep", "read_sweep", "plot"):
+    _plain = globals()[_name]
+    globals()[_name] = _guarded(_plain, "sma." + _name)
+    setattr(_sys.modules[_plain.__module__], _name, globals()[_name])
+for _cls in (Results, Fields):
+    for _name, _member in list(vars(_cls).items()):
+        if callable(_member) and not _name.startswith("_"):
+            setattr(_cls, _name, _guarded(_member, f"{_cls.__name__}.{_name}"))
+
 __all__ = ["run", "read", "Results", "options", "scenes", "script", "check_option", "read_csv", "frame",
            "read_vtu", "read_pvd", "Fields", "sweep", "read_sweep", "plot", "SceneError", "ROOT", "FF"]
