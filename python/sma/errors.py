@@ -88,3 +88,9 @@ def tool_errors_when_run_from(shim):
     program = os.path.abspath(sys.argv[0]) if sys.argv and sys.argv[0] else ""
     if program.startswith(tools + os.sep):
         tool_errors(os.path.relpath(program, os.path.dirname(tools)))
+        # A console that cannot print a character (LC_ALL=C, PYTHONIOENCODING=ascii) gets it
+        # escaped: printing a folder named with an accent raised, and a plot tool blamed the
+        # results it had just read ("an edited or foreign summary.json?").
+        for stream in (sys.stdout, sys.stderr):
+            if hasattr(stream, "reconfigure"):
+                stream.reconfigure(errors="backslashreplace")
