@@ -183,7 +183,28 @@ long_rows = [(number, len(line)) for number, line in
 check(not long_rows, f"docs/parameters.md: every table row at most {ROW_LIMIT} characters (move the evidence to "
       "docs/measurements.md): " + (", ".join(f"line {n} has {k}" for n, k in long_rows) or "all"))
 
+# ---- every page a handout: no line a reader must scroll (prose wrapped; the generated pages,
+# written by their tools, and table rows of the other pages are counted, not yet held to it) ----
+GENERATED = {"benchmarks.md", "figures.md", "paper-scale.md", "parameter-reference.md", "python-api.md",
+             "reference.md", "reference-paper.md"}
+long_prose, long_table_rows = [], {}
+for page in ["README.md"] + [os.path.join("docs", f) for f in sorted(os.listdir(os.path.join(ROOT, "docs")))
+                             if f.endswith(".md") and f not in GENERATED]:
+    code = False
+    for number, line in enumerate(read_text(page).split("\n"), 1):
+        if line.startswith("```"):
+            code = not code
+        if len(line) <= ROW_LIMIT or code:
+            continue
+        if line.startswith("|") and not page.endswith("measurements.md"):
+            long_table_rows[page] = long_table_rows.get(page, 0) + 1
+        else:
+            long_prose.append(f"{page}:{number} ({len(line)})")
+check(not long_prose, f"every prose line of the hand-written pages (and every line of docs/measurements.md) at "
+      f"most {ROW_LIMIT} characters: " + (", ".join(long_prose[:10]) or "all") + "; table rows still over it: "
+      + (", ".join(f"{p} {n}" for p, n in long_table_rows.items()) or "none"))
+
 record("docs", {"text_files": len(texts), "pages": pages, "links": links, "broken_links": broken,
                 "anchor_references": mentions, "unresolved_references": unresolved,
-                "outside_references": outside})
+                "outside_references": outside, "long_table_rows": long_table_rows})
 finish()
