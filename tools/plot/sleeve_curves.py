@@ -207,14 +207,22 @@ def iterations_figure(outdir, summary, loops, linthresh, xlabel, log_counts):
     the counts on a logarithmic axis too."""
     h = read_csv(os.path.join(outdir, "history.csv"))
     fig, ax = plt.subplots(figsize=(7, 4))
+    # A loop that never ran (the slip threshold without friction: all zeros) is named, not drawn.
+    idle = [label for key, label in loops if not any(h[key])]
     for key, label in loops:
-        ax.plot(h["t"], h[key], lw=0.8, label=label)
+        if label not in idle:
+            ax.plot(h["t"], h[key], lw=0.8, label=label)
     if log_counts:
-        ax.set_yscale("symlog")
+        # A logarithmic count axis shows only steps that iterate (a zero has no logarithm: a
+        # symlog axis drew a stretch 0 .. 1 that means nothing).
+        ax.set_yscale("log")
+        ax.set_ylim(bottom=0.8)
     ax.set_xscale("symlog", linthresh=linthresh)
+    ax.set_xlim(left=0)  # (a symlog axis otherwise opens on negative times)
     ax.set_xlabel(xlabel)
     ax.set_ylabel("iterations in the step")
-    ax.set_title(f"{summary['scene']}: iterations per step")
+    ax.set_title(f"{summary['scene']}: iterations per step" + (f"\n(not drawn, zero at every step: {', '.join(idle)})"
+                                                                if idle else ""), fontsize=10)
     ax.legend(fontsize=8)
     fig.tight_layout()
     save(fig, os.path.join(outdir, "iterations.png"), 120)

@@ -13,7 +13,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from sleeve_curves import phase_spans, point_labels, read_csv, shade, zoom_end  # noqa: E402
+from sleeve_curves import coincident_groups, phase_spans, point_labels, read_csv, shade, zoom_end  # noqa: E402
 from sma.plotting import save  # noqa: E402
 
 # A point touches the pipe when its gap is at most this (m): the contact solver leaves round-off
@@ -142,9 +142,17 @@ def displacement(outdir, summary):
         return
     par = summary["parameters"]
     half = par.get("ring") == "half"
-    fig, (left, middle, right) = plt.subplots(1, 3, figsize=(17, 5.6))
-    hidden, middle_top = [], 0.0
     ellipse = obstacle_is_summarys(outdir, summary)
+    # Around a centred circular pipe the gap along the surface is u_r shifted by a constant: the
+    # middle panel would repeat the left one (one idea per panel), so it is drawn only where the
+    # gap varies along the surface (an ellipse, an offset, a variant's obstacle).
+    uniform_gap = ellipse and par["pipe_A"] == par["pipe_B"] and not par.get("offset", 0)
+    if uniform_gap:
+        fig, (left, right) = plt.subplots(1, 2, figsize=(13, 5.6))
+        middle = None
+    else:
+        fig, (left, middle, right) = plt.subplots(1, 3, figsize=(17, 5.6))
+    hidden, middle_top, frames_drawn = [], 0.0, []
     for t, vtu, name in states:
         nodes = inner_surface(outdir, summary, vtu)
         angle = [n[0] for n in nodes]
@@ -156,13 +164,24 @@ def displacement(outdir, summary):
             # the pipe by the interference and would only squash the scales.
             hidden.append(name or f"t = {t:g} s")
             continue
-        line, = left.plot(angle, [n[1] * 1e6 for n in nodes], "-o", ms=2, lw=1, label=label)
-        if ellipse:
-            middle.plot(angle, [n[3] * 1e6 for n in nodes], "-o", ms=2, lw=1, color=line.get_color(), label=label)
+        # The three instants in colour, each with its legend entry; the frames between them thin and
+        # grey, one legend entry for all (20 entries on one line after contact said nothing).
+        style = dict(marker="o", ms=2, lw=1, label=label) if name else \
+            dict(color="0.7", lw=0.6, zorder=1, label="_frame")
+        if not name:
+            frames_drawn.append(t)
+        line, = left.plot(angle, [n[1] * 1e6 for n in nodes], **style)
+        if ellipse and middle is not None:
+            middle.plot(angle, [n[3] * 1e6 for n in nodes], **dict(style, color=line.get_color()))
             middle_top = max(middle_top, max(n[3] for n in nodes))
+    if frames_drawn:
+        label = f"frames at t = {frames_drawn[0]:g} ... {frames_drawn[-1]:g} s ({len(frames_drawn)}, grey)"
+        for ax in (left, middle):
+            if ax is not None:
+                ax.plot([], [], color="0.7", lw=0.6, label=label)
     if ellipse:
         left.plot(angle, [n[2] * 1e6 for n in nodes], "k--", lw=1, label="pipe surface: the u_r that touches it")
-    else:
+    elif middle is not None:
         # A variant's own obstacle (ObstacleAt): its gap at the other instants cannot be recomputed
         # here, but the run wrote its own at the end (contact-final.csv's gap, any obstacle shape).
         final = read_csv(os.path.join(outdir, "contact-final.csv"))
@@ -175,9 +194,12 @@ def displacement(outdir, summary):
             middle.text(0.5, 0.5, "the run's obstacle is not summary.json's ellipse\n(a variant's ObstacleAt):\n"
                         "the gap along the surface is not drawn; points.csv's gap (right) is the run's own",
                         ha="center", va="center", transform=middle.transAxes, fontsize=8)
-    middle.axhline(0, color="k", lw=0.8)
-    gap_axis(middle, middle_top)
-    for ax in (left, middle):
+    if middle is not None:
+        middle.axhline(0, color="k", lw=0.8)
+        gap_axis(middle, middle_top)
+        middle.set_ylabel("gap to the pipe, n.u + initial gap (um); 0: touching")
+        middle.set_title("gap to the pipe along the surface", fontsize=9)
+    for ax in (left, middle) if middle is not None else (left,):
         ax.set_xlabel("angle of the inner-surface node (deg)")
         ax.grid(alpha=0.3)
         if ax.get_legend_handles_labels()[0]:
@@ -185,8 +207,6 @@ def displacement(outdir, summary):
     left.set_ylabel("radial displacement u_r (um)")
     left.set_title("radial displacement about the ring's centre" +
                    (f" ({', '.join(hidden)}: the initial state u = 0, not shown)" if hidden else ""), fontsize=9)
-    middle.set_ylabel("gap to the pipe, n.u + initial gap (um); 0: touching")
-    middle.set_title("gap to the pipe along the surface", fontsize=9)
     # The gap at the three points against time, zoomed like the force: the order of touching, the
     # openings after it. Beside it the share of the inner nodes in contact: near one half, contact
     # alternates node to node (the P1 checkerboard the pressure recovery filters, docs/parameters.md)
@@ -196,20 +216,36 @@ def displacement(outdir, summary):
     labels = point_labels(summary, names)
     h = read_csv(os.path.join(outdir, "history.csv"))
     shade(right, phase_spans(summary, h), [0.0] + h["t"])
-    for name in names:
-        gap = p[f"gap_{name}_m"]
-        label = labels[name]
-        opens = reopening(p["t"], gap)
-        if opens:
-            label += f": opens again by up to {opens[0] * 1e6:.2g} um (t = {opens[1]:.3g} s)"
-        right.plot(p["t"], [g * 1e6 for g in gap], lw=1.2, label=label)
+    # Points whose gaps coincide are one legend entry (their curves drawn dashed and dotted under it:
+    # three coinciding curves hid each other with three entries).
+    gaps = {labels[n]: (p["t"], [g * 1e6 for g in p[f"gap_{n}_m"]]) for n in names}
+    colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    by_label = {labels[n]: n for n in names}
+    for k, (group_label, members) in enumerate(coincident_groups(gaps)):
+        for j, member in enumerate(members):
+            label = group_label
+            opens = reopening(p["t"], p[f"gap_{by_label[member]}_m"])
+            if opens and len(members) == 1:
+                label += f": opens again by up to {opens[0] * 1e6:.2g} um (t = {opens[1]:.3g} s)"
+            right.plot(*gaps[member], lw=1.2, ls=("-", "--", ":")[j % 3], color=colours[k % len(colours)],
+                       label=label if j == 0 else "_member")
     right.axhline(0, color="k", lw=0.8)
     t_zoom = zoom_end(summary, p["t"][-1])
+    # Once every point touches for good the gaps are zero to the end: the axis stops a little
+    # after the last opening (an empty panel after 1 s said nothing), and the title says so.
+    widest = max(max(p[f"gap_{n}_m"]) for n in names)
+    last_open = max((t for n in names for t, g in zip(p["t"], p[f"gap_{n}_m"]) if g > 1e-3 * widest), default=0.0)
+    closed_from = None
+    if 0 < last_open < t_zoom / 4:
+        closed_from = next((t for t in p["t"] if t > last_open), None)
+        t_zoom = max(4 * last_open, 1e-9)
     right.set_xlim(0, t_zoom)
     gap_axis(right, max(max(p[f"gap_{n}_m"]) for n in names))
     right.set_xlabel("time t (s)")
     right.set_ylabel("gap to the pipe at the point's node (um)")
-    right.set_title("gap at the three points against time (phases shaded)", fontsize=9)
+    right.set_title("gap at the three points against time (phases shaded)" +
+                    (f"\nall three touching (gap below 0.1 % of its largest) from t = {closed_from:g} s to the end"
+                     if closed_from else ""), fontsize=9)
     right.grid(alpha=0.3)
     share = right.twinx()
     share.plot(h["t"], [c / summary["contact_nodes"] for c in h["contact_nodes"]], color="0.3", lw=0.8, ls=":",
