@@ -109,8 +109,20 @@ def unit_of(meaning):
 
 
 def value_label(param, value, unit):
-    """A legend entry: "-interference 5e-05 m" (the option as typed, with its unit)."""
-    return f"-{param} {value}" + (f" {unit}" if unit else "")
+    """A legend entry: "-interference 5e-05 m" (the option as typed, with its unit); a temperature
+    also in Celsius ("-Text 293.15 K (20 °C)"), and one typed with its unit as typed ("-Text 20C"
+    read "-Text 20C K")."""
+    text = str(value)
+    if unit == "K" and re.fullmatch(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?[CcKk]", text):
+        kelvin = float(text[:-1]) + (273.15 if text[-1] in "Cc" else 0.0)
+        return f"-{param} {text[:-1]} {'°C' if text[-1] in 'Cc' else 'K'}" + \
+            (f" ({kelvin - 273.15:.4g} °C)" if text[-1] in "Kk" else "")
+    if unit == "K":
+        try:
+            return f"-{param} {text} K ({float(text) - 273.15:.4g} °C)"
+        except ValueError:
+            pass
+    return f"-{param} {text}" + (f" {unit}" if unit else "")
 
 
 def step_time(history, step):
