@@ -204,6 +204,12 @@ check(not long_prose, f"every prose line of the hand-written pages (and every li
       f"most {ROW_LIMIT} characters: " + (", ".join(long_prose[:10]) or "all") + "; table rows still over it: "
       + (", ".join(f"{p} {n}" for p, n in long_table_rows.items()) or "none"))
 
+# ---- docs/hooks.md shows each hook's default body as the sources define it ----
+hooks = subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "tools", "docs", "hook_defaults.py"), "--check"],
+                       capture_output=True, text=True)
+check(hooks.returncode == 0, "docs/hooks.md's default bodies are the sources' (tools/docs/hook_defaults.py --check)"
+      + (": " + hooks.stderr.strip() if hooks.returncode else ""))
+
 record("docs", {"text_files": len(texts), "pages": pages, "links": links, "broken_links": broken,
                 "anchor_references": mentions, "unresolved_references": unresolved,
                 "outside_references": outside, "long_table_rows": long_table_rows})
