@@ -320,7 +320,7 @@ lab: plugin meshes
 help:
 	@echo "Where to start:"
 	@echo "  1. make run                  the default scene (sleeve-circular, the paper's Fig. 12): results/sleeve-circular/,"
-	@echo "                               its figures *.png and summary.json (the first run builds the plugin: about 90 s)"
+	@echo "                               its figures *.png and summary.json (the first run builds the plugin: about 1 min on 2 cores)"
 	@echo "  2. make run SCENE=sleeve-radial ARGS='-help'   a scene's options; then ARGS='-g 1000 -out results/g1000'"
 	@echo "  3. make lab                  the students' notebook in Jupyter (README.md, docs/tutorial/)"
 	@echo "Targets:"

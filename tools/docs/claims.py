@@ -154,6 +154,22 @@ def steps(n):
     return "no step" if n == 0 else f"{n} step" + ("" if n == 1 else "s")
 
 
+def counts_line(verdicts):
+    """The table's state in one line: the verdicts on each model, and how many of the rows that do
+    not agree on the default model are explained by a run and how many are open."""
+    def tally(side):
+        words = [v.split(" / ")[side if " / " in v else 0] for v, _, measured in verdicts if side == 0 or measured]
+        return ", ".join(f"{words.count(w)} {w}" for w in ("agrees", "partly", "disagrees") if words.count(w)) + \
+            ("" if side == 0 else f" (of the {len(words)} statements measured on it)")
+    rest = [e for v, e, _ in verdicts if v.split(" / ")[0] != "agrees"]
+    explained = sum(1 for e in rest if e.startswith("explained"))
+    opened = sum(1 for e in rest if e.startswith("open"))
+    return (f"**In one line:** {len(verdicts)} statements. Default model: {tally(0)}. On/off scheme: {tally(1)}. "
+            f"Of the {len(rest)} where the default does not agree: {explained} explained by a run, {opened} open, "
+            f"{len(rest) - explained - opened} with a note only. (Which agreements are fitted and which predicted "
+            "is not yet marked row by row: docs/paper-scale.md says what was fitted.)")
+
+
 def table():
     """The Markdown lines of the claims table; [] with a note when a run is missing."""
     need = [default(s) for s in ("sleeve-circular", "sleeve-circular-gvar", "sleeve-offset", "sleeve-elliptic",
@@ -162,10 +178,11 @@ def table():
     if absent:
         return ["*(claims table: runs missing: " + ", ".join(os.path.relpath(d, ROOT) for d in absent)
                 + "; make figures runs them)*", ""]
-    rows = []
+    rows, verdicts = [], []
 
     def row(figs, claim, ours, onoff, verdict_text, explanation):
         rows.append(f"| {figs} | {claim} | {ours} | {onoff} | {verdict_text} | {explanation} |")
+        verdicts.append((verdict_text, explanation, bool(str(onoff).strip())))
 
     c, co = curve(default("sleeve-circular")), curve(out_of("onoff-sleeve-circular"))
     g, go = curve(default("sleeve-circular-gvar")), curve(out_of("onoff-sleeve-circular-gvar"))
@@ -356,7 +373,7 @@ def table():
              "defaults (the default phase model) and with the paper's on/off scheme (`-phasemodel onoff`, the quarter "
              "mesh; results/claims/), with a verdict on the default and, for a disagreement, the run that tests an "
              "explanation or \"open\". Measures as in docs/paper-scale.md; " + f"seed {rs['parameters']['seed']} for "
-             "the random threshold.", "",
+             "the random threshold.", "", counts_line(verdicts), "",
              "| Fig. | the paper says | default model | on/off scheme | verdict (default / on/off) | explanation |",
              "|---|---|---|---|---|---|"] + rows + [""])
 
