@@ -289,6 +289,20 @@ def pct(x):
     return f"{100 * x:.3f} %" if x is not None else "-"
 
 
+def level_rows(levels, pct, reversion=False):
+    """The table rows of the fraction model's levels: nr, steps, wall time, error against p* (and,
+    with `reversion`, over the reversion window), difference to the next level, order of the
+    differences ("-" where there is none); `pct` formats a relative error."""
+    rows = []
+    for r in levels:
+        o = r.get("order_of_differences")
+        cells = [f"{r['nr']}", f"{r['steps']}", f"{r['wall_seconds']:.2f}", pct(r["error"])]
+        cells += [pct(r.get("error_reversion"))] if reversion else []
+        cells += [pct(r.get("difference_to_next")), f"{o:.2f}" if o is not None else "-"]
+        rows.append("| " + " | ".join(cells) + " |")
+    return rows
+
+
 def assumption_rows(s, pct):
     """The order used and the table of the assumption tests A1-A3 of summary s (pct: the percent
     format), as the document's lines."""
@@ -325,12 +339,7 @@ def write_doc(path, s):
         "| nr | steps | wall (s) | error against p* | difference to next | order of differences |",
         "|---|---|---|---|---|---|",
     ]
-    for r in s["fraction_levels"]:
-        o = r.get("order_of_differences")
-        lines.append(f"| {r['nr']} | {r['steps']} | {r['wall_seconds']:.2f} | {pct(r['error'])} | "
-                     f"{pct(r.get('difference_to_next'))} | {o:.2f} |" if o is not None else
-                     f"| {r['nr']} | {r['steps']} | {r['wall_seconds']:.2f} | {pct(r['error'])} | "
-                     f"{pct(r.get('difference_to_next'))} | - |")
+    lines += level_rows(s["fraction_levels"], pct)
     lines += assumption_rows(s, pct) + [
         "",
         f"The reference's uncertainty (the larger of A2's and A3's): {pct(s['reference_uncertainty'])}.",

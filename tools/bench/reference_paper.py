@@ -7,7 +7,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from reference_curve import ROOT, TEND, STEPS_PER_ELEMENT, run, l1, austenite_time, fraction_reference, assumption_rows  # noqa: E402
+from reference_curve import ROOT, TEND, STEPS_PER_ELEMENT, run, l1, austenite_time, fraction_reference, assumption_rows, level_rows  # noqa: E402
 
 # --scale paper (the module docstring): 20 nr steps over 80 s, the reduced scale's dt = 4 / nr s.
 PAPER_TEND = 80.0
@@ -126,11 +126,7 @@ def write_doc_paper(path, s):
         "| nr | steps | wall (s) | error against p* | error, reversion window | difference to next | order of differences |",
         "|---|---|---|---|---|---|---|",
     ]
-    for r in s["fraction_levels"]:
-        o = r.get("order_of_differences")
-        lines.append(f"| {r['nr']} | {r['steps']} | {r['wall_seconds']:.2f} | {pct3(r['error'])} | "
-                     f"{pct3(r.get('error_reversion'))} | {pct3(r.get('difference_to_next'))} | "
-                     + (f"{o:.2f} |" if o is not None else "- |"))
+    lines += level_rows(s["fraction_levels"], pct3, reversion=True)
     lines += assumption_rows(s, pct3) + [
         "",
         f"The reference's uncertainty (the larger of A2's and A3's): {pct3(s['reference_uncertainty'])} over the transient.",
