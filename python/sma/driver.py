@@ -22,7 +22,7 @@ import sys
 
 import numpy as np
 
-from . import children, frames, results_io, vtu
+from . import children, frames, results_io, units, vtu
 from .errors import SceneError
 from .helptsv import parse_tsv
 from .repository import FF, ROOT
@@ -126,12 +126,10 @@ def word(scene, name, value):
             # run would print them, exit 0 and compute nothing
             refuse("an option name, not a value")
         return value
-    if isinstance(value, str) and kind == "real" and is_temperature(option):
+    if isinstance(value, str) and kind == "real" and is_temperature(option) and units.temperature_word(value):
         # A temperature may carry its unit, as on the command line ("20C", "293.15K"): passed on as
         # written, the scene reads it in kelvin (edp/lib/errors.idp KelvinWord).
-        text = value.strip()
-        if re.match(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?[CcKk]\Z", text):
-            return text
+        return value.strip()
     if isinstance(value, str):
         text = value.strip()
         pattern = r"[+-]?\d+\Z" if kind == "int" else r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?\Z"

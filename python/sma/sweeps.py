@@ -30,7 +30,7 @@ import re
 
 import numpy as np
 
-from . import children, driver, results_io
+from . import children, driver, results_io, units
 from .errors import SceneError
 from .plotting import pyplot, save
 from .units import KELVIN_AT_0C
@@ -113,13 +113,13 @@ def value_label(param, value, unit):
     also in Celsius ("-Text 293.15 K (20 °C)"), and one typed with its unit as typed ("-Text 20C"
     read "-Text 20C K")."""
     text = str(value)
-    if unit == "K" and re.fullmatch(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?[CcKk]", text):
-        kelvin = float(text[:-1]) + (273.15 if text[-1] in "Cc" else 0.0)
-        return f"-{param} {text[:-1]} {'°C' if text[-1] in 'Cc' else 'K'}" + \
-            (f" ({kelvin - 273.15:.4g} °C)" if text[-1] in "Kk" else "")
+    word = units.temperature_word(text) if unit == "K" else None
+    if word and word[1] == "C":
+        return f"-{param} {word[0]} °C"
     if unit == "K":
+        number = word[0] if word else text
         try:
-            return f"-{param} {text} K ({float(text) - 273.15:.4g} °C)"
+            return f"-{param} {number} K ({units.celsius(float(number)):.4g} °C)"
         except ValueError:
             pass
     return f"-{param} {text}" + (f" {unit}" if unit else "")
@@ -435,9 +435,8 @@ def value_as_read(scene, name, text):
     option = driver.options(scene)[name]
     if option["type"] == "string":
         return text
-    if option["type"] == "real" and driver.is_temperature(option) and text[-1:] in "CcKk":
-        return float(text[:-1]) + (273.15 if text[-1:] in "Cc" else 0.0)
-    return float(text)
+    kelvin = units.kelvin_of_word(text) if option["type"] == "real" and driver.is_temperature(option) else None
+    return float(text) if kelvin is None else kelvin
 
 
 def grid_runs(params, grid, jobs):
