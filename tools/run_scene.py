@@ -18,6 +18,7 @@ command gets it as its last argument. With -help among ARGS the script only list
 nothing is drawn. Exit: the run's exit code, else the plot's.
 """
 import os
+import re
 import shlex
 import shutil
 import sys
@@ -38,9 +39,13 @@ def words_of(variable, name):
 
 
 def whole_number(text, what, largest):
-    """text as a whole number from 1 to largest, or exit 2 naming `what`."""
-    if not text.isdigit() or not 1 <= int(text) <= largest:
-        print(f"error: {what}='{text}' must be a whole number from 1 to {largest}", file=sys.stderr)
+    """text as a whole number from 1 to largest, written without leading zeros, or exit 2 naming
+    make ensemble's variable `what` ("NP='1;x' ..." a word, never a shell's)."""
+    digits = len(str(largest))
+    if not re.fullmatch(rf"[1-9][0-9]{{0,{digits - 1}}}", text):
+        kind = "MPI ranks" if what == "NP" else "seeds"
+        print(f"error: make ensemble: {what}='{text}' must be a whole number of {kind} from 1 to {largest}",
+              file=sys.stderr)
         sys.exit(2)
     return text
 
@@ -57,8 +62,11 @@ def parse(argv):
     return opts, argv
 
 
-# Options that change how a run reports, not what it computes: they do not name its folder.
-REPORTING = {"-quiet", "-vtkevery", "-out", "-help", "-checkonly"}
+# Options that change how a run reports or where it stops, not what it computes: they do not name
+# its folder (the checkpoint's options too, as edp/problems/sleeve/checkpoint.idp leaves them out
+# of a checkpoint: a run stopped with -checkpoint 500 -stopafter 900 and continued with -resume 1
+# must find its folder).
+REPORTING = {"-quiet", "-vtkevery", "-out", "-help", "-checkonly", "-checkpoint", "-resume", "-stopafter"}
 
 
 def named_folder(default, words):
