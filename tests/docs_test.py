@@ -11,8 +11,11 @@
   * the anchor rule is GitHub's: the heading's text lowercased, every character that is not a
     letter, digit, space, hyphen or underscore dropped, each space turned into a hyphen, and a
     repeated anchor suffixed -1, -2, ...; checked first on headings whose GitHub anchors are known;
-  * docs/parameters.md is a handout: every table row (a choice and its reason) at most 400
-    characters, the evidence in docs/measurements.md (a row of 405 slipped in unnoticed).
+  * every page is a handout: each line of README.md and docs/*.md outside fenced code (prose,
+    lists, table rows) at most 400 characters, the evidence in docs/measurements.md (a row of 405
+    slipped into docs/parameters.md unnoticed); a failure names file:line and the length;
+  * no page but docs/measurements.md (the evidence page) names an issue number ("issue 27"):
+    the pages say what the code is and does.
 Writes results/checks/docs.json.
 """
 import os
@@ -175,34 +178,24 @@ for rel, text in sorted(texts.items()):
 check(mentions > 0 and not unresolved, f"{mentions} docs/<page>.md#anchor references in the "
       "tracked files resolve: " + ("; ".join(unresolved[:10]) or "all"))
 
-# ---- docs/parameters.md: rows a student reads at a glance ----
+# ---- every page a handout: no line a reader must scroll ----
+# Every line of README.md and docs/*.md outside fenced code (prose, list items, headings, table
+# rows; the generated pages as their tools write them) at most ROW_LIMIT characters: prose wrapped
+# (Markdown joins the lines of a paragraph), a table's long cells shortened with the detail below
+# the table or in docs/measurements.md (a row of 405 slipped into docs/parameters.md unnoticed).
 ROW_LIMIT = 400
-long_rows = [(number, len(line)) for number, line in
-             enumerate(read_text(os.path.join("docs", "parameters.md")).split("\n"), 1)
-             if line.startswith("|") and len(line) > ROW_LIMIT]
-check(not long_rows, f"docs/parameters.md: every table row at most {ROW_LIMIT} characters (move the evidence to "
-      "docs/measurements.md): " + (", ".join(f"line {n} has {k}" for n, k in long_rows) or "all"))
+long_lines = [f"{rel}:{number} ({len(line)} characters)" for rel in pages
+              for number, line in prose_lines(texts[rel]) if len(line) > ROW_LIMIT]
+check(not long_lines, f"every line of README.md and docs/*.md outside fenced code at most {ROW_LIMIT} "
+      f"characters ({len(pages)} pages): " + (", ".join(long_lines) or "all"))
 
-# ---- every page a handout: no line a reader must scroll (prose wrapped; the generated pages,
-# written by their tools, and table rows of the other pages are counted, not yet held to it) ----
-GENERATED = {"benchmarks.md", "figures.md", "paper-scale.md", "parameter-reference.md", "python-api.md",
-             "reference.md", "reference-paper.md"}
-long_prose, long_table_rows = [], {}
-for page in ["README.md"] + [os.path.join("docs", f) for f in sorted(os.listdir(os.path.join(ROOT, "docs")))
-                             if f.endswith(".md") and f not in GENERATED]:
-    code = False
-    for number, line in enumerate(read_text(page).split("\n"), 1):
-        if line.startswith("```"):
-            code = not code
-        if len(line) <= ROW_LIMIT or code:
-            continue
-        if line.startswith("|") and not page.endswith("measurements.md"):
-            long_table_rows[page] = long_table_rows.get(page, 0) + 1
-        else:
-            long_prose.append(f"{page}:{number} ({len(line)})")
-check(not long_prose, f"every prose line of the hand-written pages (and every line of docs/measurements.md) at "
-      f"most {ROW_LIMIT} characters: " + (", ".join(long_prose[:10]) or "all") + "; table rows still over it: "
-      + (", ".join(f"{p} {n}" for p, n in long_table_rows.items()) or "none"))
+# ---- the pages say what the code is, not its history: issue numbers only on the evidence page ----
+ISSUE = re.compile(r"\bissues?\s+#?[0-9]+", re.I)
+HISTORY_PAGE = "docs/measurements.md"
+issue_mentions = [f"{rel}:{number}: {m.group(0)!r}" for rel in pages if rel != HISTORY_PAGE
+                  for number, line in enumerate(texts[rel].split("\n"), 1) for m in ISSUE.finditer(line)]
+check(not issue_mentions, f"no page but {HISTORY_PAGE} names an issue number: "
+      + (", ".join(issue_mentions) or "none"))
 
 # ---- docs/hooks.md shows each hook's default body as the sources define it ----
 hooks = subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "tools", "docs", "hook_defaults.py"), "--check"],
@@ -212,5 +205,5 @@ check(hooks.returncode == 0, "docs/hooks.md's default bodies are the sources' (t
 
 record("docs", {"text_files": len(texts), "pages": pages, "links": links, "broken_links": broken,
                 "anchor_references": mentions, "unresolved_references": unresolved,
-                "outside_references": outside, "long_table_rows": long_table_rows})
+                "outside_references": outside, "long_lines": long_lines, "issue_mentions": issue_mentions})
 finish()

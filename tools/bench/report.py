@@ -13,6 +13,7 @@ import scaling
 import study
 import work_precision
 from common import DOC, save
+from markdown_wrap import wrap  # tools/: prose lines wrapped at 100 columns
 from study import G_SWEEP
 
 
@@ -156,5 +157,5 @@ def write_doc(r, plt):
     against_numpy.doc(r, w)
     os.makedirs(os.path.dirname(DOC), exist_ok=True)
     with open(DOC + ".partial", "w") as f:
-        f.write("\n".join(lines))
+        f.write(wrap("\n".join(lines)))
     os.replace(DOC + ".partial", DOC)

@@ -16,6 +16,7 @@ from figures_data import (DOCS, RESULTS, celsius_text, checks, coincide_text, co
                           missing, mpa, phase_radii, run_files, section, summary, verdict)
 from sleeve_surface import inner_surface, translation_along_x  # noqa: E402
 from units import KELVIN_AT_0C  # noqa: E402
+from markdown_wrap import wrap  # noqa: E402
 
 
 def main():
@@ -361,7 +362,7 @@ def main():
                 f"{s['psor_sweeps_mean']:.1f} PSOR iterations on average (paper: about 3, 4 and 10).", ""]
 
     with open(os.path.join(DOCS, "figures.md.partial"), "w") as f:
-        f.write("\n".join(out))
+        f.write(wrap("\n".join(out)))  # prose lines wrapped at 100 columns (tools/markdown_wrap.py)
     os.replace(os.path.join(DOCS, "figures.md.partial"), os.path.join(DOCS, "figures.md"))
     if missing:
         print("figures: missing inputs (run make figures):\n  " + "\n  ".join(missing), file=sys.stderr)
