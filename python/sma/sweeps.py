@@ -128,7 +128,9 @@ WORDS = {
     "steps": ("time steps", None), "dt": ("time step", None), "tend": ("simulated time", None),
     "tol": ("time-step tolerance", None), "nr": ("elements through the thickness", None),
     "checkpoint": ("checkpoint interval (steps)", None), "pullout": ("pull-out displacement", "mm"),
-    "minpressure": ("least acceptable pressure", "MPa"),
+    "minpressure": ("least acceptable pressure", "MPa"), "phasemodel": ("phase model", None),
+    "stepsolver": ("step solver", None), "plane": ("2D model", None), "scale": ("scale", None),
+    "pulldirection": ("pull direction", None), "borefilter": ("bore pressure filter", None),
     # table columns (the key figures, by their summary key)
     "final_pressure_mean": ("final mean contact pressure", "MPa"), "peak_pressure_mean": ("peak mean contact pressure", "MPa"),
     "lame_pressure": ("Lame's shrink-fit pressure", "MPa"), "clamp_pressure": ("clamping pressure", "MPa"),
