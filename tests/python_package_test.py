@@ -280,11 +280,12 @@ def sweep_checks():
           f"independent of g within {by_g:.1e}")
     ax = sma.plot(table, "final_pressure_mean_Pa")
     lines = [(ln.get_label(), list(ln.get_xdata()), list(ln.get_ydata())) for ln in ax.get_lines()]
-    expected = [(g, [2e-4, 5e-4], list(table[table["g_W/(m^2 K)"] == g].sort_values("interference_m")
+    expected = [(g, [0.2, 0.5], list(table[table["g_W/(m^2 K)"] == g].sort_values("interference_m")
                                        ["final_pressure_mean_Pa"] / 1e6)) for g in (250.0, 1000.0)]
-    check(len(lines) == 2 and all(x == e[1] and np.allclose(y, e[2], rtol=1e-15) and str(int(e[0])) in label
-                                  for (label, x, y), e in zip(lines, expected)),
-          f"(e) sma.plot: one line per g ({[ln[0] for ln in lines]}) through the table's final pressures (MPa)")
+    check(len(lines) == 2 and all(np.allclose(x, e[1], rtol=1e-15) and np.allclose(y, e[2], rtol=1e-15)
+                                  and str(int(e[0])) in label for (label, x, y), e in zip(lines, expected)),
+          f"(e) sma.plot: one line per g ({[ln[0] for ln in lines]}) through the table's final pressures (MPa) "
+          "against the interference (mm)")
     again = sma.read_sweep(os.path.join(OUT, "sweep"))
     figures = table.attrs["figures"]
     check(again.equals(table) and [os.path.basename(p) for p in figures] == ["force-temperature.png", "final-pressure.png"]

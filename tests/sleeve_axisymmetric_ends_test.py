@@ -111,7 +111,7 @@ for nr in (2, 4):
         run = axi(f"pull-{direction}-nr{nr}", "-length", "0.1", "-nr", str(nr), "-mu", str(MU), "-pullout", "1e-3",
                   "-pullsteps", "25", "-pulldirection", direction)
         last = run["pullout"][-1]
-        F, N = abs(float(last["axial_force"])), float(last["normal_force_total"])
+        F, N = float(last["pullout_force"]), float(last["normal_force_total"])
         plateau = abs(F - MU * N) / (MU * N)
         check(plateau < 1e-8 and int(last["nodes_slipping"]) == int(last["nodes_in_contact"]) > 0,
               f"{direction} nr {nr}: plateau |F| {F / 1e3:.3f} kN = mu N ({plateau:.2g} < 1e-8), "
@@ -136,10 +136,10 @@ for direction in ("towards", "away"):
               "-pullsteps", "25", "-pulldirection", direction, *STEEL)
     action_reaction(f"steel {direction}", run)
     last = run["pullout"][-1]
-    F, N = abs(float(last["axial_force"])), float(last["normal_force_total"])
+    F, N = float(last["pullout_force"]), float(last["normal_force_total"])
     grip = run["summary"]["pipe"]["pullout_grip_force"]
-    check(abs(F - MU * N) < 1e-8 * F and abs(grip - float(last["axial_force"])) <= 1e-9 * F,
-          f"steel {direction}: plateau {F / 1e3:.3f} kN = mu N, the grip's force = the contact's axial force")
+    check(abs(F - MU * N) < 1e-8 * F and abs(grip - float(last["pullout_force"])) <= 1e-9 * F,
+          f"steel {direction}: plateau {F / 1e3:.3f} kN = mu N, the grip's force = the pull-out force")
     elastic[direction] = F
     data[f"pull_{direction}_steel_nr2_kN"] = F / 1e3
 check(elastic["away"] > elastic["towards"], f"steel: away {elastic['away'] / 1e3:.2f} kN above towards "

@@ -125,14 +125,14 @@ for nr in (2, 4, 8):
               "-pullsteps", "25", *STEEL)
     invariants(f"pull nr {nr}", run)
     s, last = run["summary"], run["pullout"][-1]
-    F, N = abs(float(last["axial_force"])), float(last["normal_force_total"])
+    F, N = float(last["pullout_force"]), float(last["normal_force_total"])
     plateau = abs(F - 0.2 * N) / (0.2 * N)
     check(plateau < 1e-8, f"pull nr {nr}: sliding plateau |F| {F:.9g} N = mu N {0.2 * N:.9g} N ({plateau:.2g} < 1e-8)")
     check(int(last["nodes_slipping"]) == int(last["nodes_in_contact"]) > 0,
           f"pull nr {nr}: every node in contact slips ({last['nodes_slipping']}/{last['nodes_in_contact']})")
     grip = s["pipe"]["pullout_grip_force"]
-    check(abs(grip - float(last["axial_force"])) <= 1e-9 * F, f"pull nr {nr}: the grip's force {grip:.9g} N = the "
-          f"contact's axial force {float(last['axial_force']):.9g} N")
+    check(abs(grip - float(last["pullout_force"])) <= 1e-9 * F, f"pull nr {nr}: the grip's force {grip:.9g} N = the "
+          f"pull-out force {float(last['pullout_force']):.9g} N")
     pull[nr] = F
     data[f"pullout_force_nr{nr}"] = F
 rigid_pull = axi("pull-rigid-nr2", "-length", "0.1", "-nr", "2", "-mu", "0.2", "-pullout", "1e-3", "-pullsteps", "25")

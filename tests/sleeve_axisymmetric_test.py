@@ -16,8 +16,17 @@ frictionless pipe), at the paper's scale (0.5 mm interference, a = 2625).
    the coarse nodes must fall by a factor >= 1.6 (order >= 0.7: the free end's corner is O(h)).
 3. Friction and pull-out (the whole length, its end face z = 0 held axially, mu 0.2, the pipe moved
    1 mm towards the held face after clamping): at the end every node in contact slips and the
-   axial force equals mu times the total normal force to 1e-8 (the sliding plateau), which is the
-   curve's maximum; the pull-out force converges (nr 2, 4, 8: successive differences at least halve).
+   pull-out force equals mu times the total normal force to 1e-8 (the sliding plateau), which is
+   the curve's maximum; the pull-out force converges (nr 2, 4, 8: successive differences at least
+   halve). Its sign convention (docs/parameters.md, pull-out force: the sleeve's force on the pipe,
+   > 0 against the pipe's motion), on these runs and at nr 2 with -pulldirection away and with a
+   pull of 0.1 mm (short of the plateau, the force rising from < 0): summary.json's
+   pullout_force_final is pullout.csv's last row and pullout_force_max the column's maximum, both
+   with their sign; the force is > 0 at the end and the sleeve's force on the pipe does negative
+   work on the pipe's displacement; and it equals, to 1e-5, the force computed independently from
+   fields-4-pulled.vtu: the bore's shear stress sigma_rz over the first layer of cells, -2 pi / hr
+   sum_T sigma_rz,T int_T r dA (the weak form of the sleeve's equilibrium along z with the test
+   function 1 on the bore, 0 one cell in: exactly the sum of the nodal friction forces, f = 0).
 4. Invariants on every run: no penetration (gap >= -1e-12 m), pressures >= 0, all austenite at the
    end, the discrete heat balance at round-off (1e-8); bad input fails naming the option (-length 0,
    -plane stress).
@@ -29,10 +38,15 @@ import os
 import subprocess
 import sys
 
+import numpy as np
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
 from checklib import ROOT, check, finish, record, rows, run_scene  # noqa: E402
+
+sys.path.insert(0, os.path.join(ROOT, "python"))
+from sma.vtu import read_vtu  # noqa: E402
 
 PAPER = ["-scale", "paper", "-quiet", "1", "-steps", "500", "-tend", "100"]
 
@@ -102,25 +116,77 @@ check(diffs[0] / diffs[1] >= 1.6, f"profile differences {diffs[0]:.3g} (nr 2-4),
 
 # ---- 3. Friction and pull-out: the whole length, its end face z = 0 held (the shoulder), mu 0.2,
 # the pipe moved 1 mm towards it after clamping ----
+def bore_shear_force(tag, out, summary):
+    """The axial force (N, along +z, the whole circumference) on the sleeve's bore after the
+    pull-out, from fields-4-pulled.vtu alone: the weak form of the sleeve's axial equilibrium with
+    the P1 test function v = phi e_z, phi = 1 on the bore nodes and 0 on the next column (the
+    first layer of cells; phi depends on r only there), gives sum over the bore nodes of the
+    contact's r_t = int sigma_rz dphi/dr r dA = -(1 / hr) sum_T sigma_rz,T int_T r dA (sigma_rz
+    constant per P1 triangle; no load f, and the phase stress is isotropic: no rz part)."""
+    p = summary["parameters"]
+    R, hr = p["ring_inner_radius"], p["ring_thickness"] / p["nr"]
+    fields = read_vtu(os.path.join(out, "fields-4-pulled.vtu"))
+    xy = fields.points[fields.triangles]  # (cells, 3 vertices, r z)
+    tol = 1e-6 * hr
+    layer = np.all(xy[:, :, 0] <= R + hr + tol, axis=1)
+    r = xy[layer][:, :, 0]
+    check(bool(np.all(np.isclose(r, R, atol=tol) | np.isclose(r, R + hr, atol=tol))),
+          f"{tag}: the first layer of cells has its vertices on r = R or R + hr only")
+    e1, e2 = xy[layer][:, 1] - xy[layer][:, 0], xy[layer][:, 2] - xy[layer][:, 0]
+    area = 0.5 * np.abs(e1[:, 0] * e2[:, 1] - e1[:, 1] * e2[:, 0])
+    return -2 * math.pi / hr * float(np.sum(fields.cell_data["sigma_rz"][layer] * area * r.mean(axis=1)))
+
+
+def sign_convention(tag, out, summary, curve):
+    """The pull-out force's one sign convention, held by summary.json, pullout.csv and the fields."""
+    forces = [float(r["pullout_force"]) for r in curve]
+    final, top = summary["pullout_force_final"], summary["pullout_force_max"]
+    check(abs(final - forces[-1]) <= 1e-9 * abs(forces[-1]) and abs(top - max(forces)) <= 1e-9 * max(abs(f) for f in forces),
+          f"{tag}: summary's final {final:.9g} N and max {top:.9g} N are pullout.csv's last row "
+          f"{forces[-1]:.9g} N and its maximum {max(forces):.9g} N, with their signs")
+    w = float(curve[-1]["pipe_displacement"])
+    on_sleeve = bore_shear_force(tag, out, summary)
+    on_pipe = -on_sleeve
+    check(final > 0 and on_pipe * w < 0,
+          f"{tag}: the pull-out force {final:.6g} N > 0, and the sleeve's force on the pipe {on_pipe:.6g} N "
+          f"(along z, from the bore's shear stress) opposes the pipe's displacement {w:.3g} m")
+    independent = math.copysign(1, w) * on_sleeve
+    check(abs(independent - final) <= 1e-5 * abs(final),
+          f"{tag}: the pull-out force {final:.9g} N = sign(w) x the bore's shear stress integrated from the "
+          f"VTU {independent:.9g} N (relative {abs(independent - final) / abs(final):.2g} <= 1e-5, float32 fields)")
+    data[f"sign_{tag}_vtu_relative"] = abs(independent - final) / abs(final)
+
+
 pull = {}
 for nr in (2, 4, 8):
     out = run_scene("sleeve-axisymmetric", f"sleeve-axisymmetric-pull-nr{nr}", *PAPER, "-length", "0.1",
                     "-nr", str(nr), "-mu", "0.2", "-pullout", "1e-3", "-pullsteps", "25")
     s = json.load(open(os.path.join(out, "summary.json")))
     curve = rows(os.path.join(out, "pullout.csv"))
+    sign_convention(f"pull nr {nr}", out, s, curve)
     last = curve[-1]
-    F, N = abs(float(last["axial_force"])), float(last["normal_force_total"])
+    F, N = float(last["pullout_force"]), float(last["normal_force_total"])
     plateau = abs(F - 0.2 * N) / (0.2 * N)
-    check(plateau < 1e-8, f"pull nr {nr}: sliding plateau |F| {F:.9g} N = mu N {0.2 * N:.9g} N "
+    check(plateau < 1e-8, f"pull nr {nr}: sliding plateau F {F:.9g} N = mu N {0.2 * N:.9g} N "
           f"(relative {plateau:.2g} < 1e-8)")
     check(int(last["nodes_slipping"]) == int(last["nodes_in_contact"]) > 0,
           f"pull nr {nr}: every node in contact slips at the end ({last['nodes_slipping']}/{last['nodes_in_contact']})")
-    forces = [abs(float(r["axial_force"])) for r in curve]
+    forces = [float(r["pullout_force"]) for r in curve]
     check(max(forces) <= F * (1 + 1e-9), f"pull nr {nr}: the plateau is the curve's maximum "
           f"({max(forces):.9g} N)")
     pull[nr] = F
     data[f"pullout_force_nr{nr}"] = F
     data[f"plateau_relative_nr{nr}"] = plateau
+# the other direction, and a pull short of the plateau (the force still rising from its start < 0)
+for tag, extra in (("away", ["-pullout", "1e-3", "-pulldirection", "away"]), ("short", ["-pullout", "1e-4"])):
+    out = run_scene("sleeve-axisymmetric", f"sleeve-axisymmetric-pull-{tag}", *PAPER, "-length", "0.1",
+                    "-nr", "2", "-mu", "0.2", "-pullsteps", "25", *extra)
+    curve = rows(os.path.join(out, "pullout.csv"))
+    sign_convention(f"pull {tag} nr 2", out, json.load(open(os.path.join(out, "summary.json"))), curve)
+    if tag == "short":
+        first = float(curve[0]["pullout_force"])
+        check(first < 0, f"pull short nr 2: the force starts < 0 ({first:.6g} N: the clamped sleeve drags the "
+              "pipe towards the held face)")
 d1, d2 = abs(pull[2] - pull[4]), abs(pull[4] - pull[8])
 check(d2 < d1 / 2, f"pull-out force converges: {pull[2]:.7g}, {pull[4]:.7g}, {pull[8]:.7g} N "
       f"(differences {d1:.4g}, {d2:.4g}: order {math.log2(d1 / d2):.2f})")

@@ -25,6 +25,7 @@ import contextlib
 import csv
 import itertools
 import json
+import math
 import os
 import re
 
@@ -108,21 +109,104 @@ def unit_of(meaning):
     return lead.group(1) if lead and is_unit(lead.group(1)) else ""
 
 
-def value_label(param, value, unit):
-    """A legend entry: "-interference 5e-05 m" (the option as typed, with its unit); a temperature
-    also in Celsius ("-Text 293.15 K (20 °C)"), and one typed with its unit as typed ("-Text 20C"
-    read "-Text 20C K")."""
+# ---- The words of the sweep figures: one table for every axis, legend and panel title ----
+# An option or a table column -> (its words, the unit it is shown in); the value is converted from
+# its SI unit (the option's -help unit, the column's suffix) by SHOWN. An option not listed is named
+# by the head of its -help meaning, shown in its SI unit (or by SHOWN's default for that unit).
+WORDS = {
+    # options
+    "g": ("heat exchange coefficient g", None), "gcontact": ("exchange coefficient in contact", None),
+    "gpipe": ("exchange coefficient with the pipe", None), "interference": ("interference", "mm"),
+    "dissipation": ("dissipation threshold k", "MPa"), "Text": ("air temperature", "°C"),
+    "Tpipe": ("pipe temperature", "°C"), "Tinit": ("initial ring temperature", "°C"),
+    "T0": ("martensite-start temperature T0", "°C"), "Tc": ("temperature Tc (alpha = 0 above)", "°C"),
+    "E": ("Young's modulus E", "GPa"), "nu": ("Poisson's ratio", None), "a": ("coefficient a of alpha(T)", None),
+    "latent": ("latent heat", None), "k": ("thermal conductivity", None), "C0": ("specific heat", None),
+    "rho": ("density", None), "mu": ("friction coefficient mu", None), "pipeE": ("pipe's Young's modulus", "GPa"),
+    "pipenu": ("pipe's Poisson's ratio", None), "pipeA": ("pipe radius", "mm"), "pipeRi": ("pipe inner radius", "mm"),
+    "Ri": ("ring inner radius", "mm"), "thickness": ("ring thickness", "mm"), "length": ("sleeve length", "mm"),
+    "steps": ("time steps", None), "dt": ("time step", None), "tend": ("simulated time", None),
+    "tol": ("time-step tolerance", None), "nr": ("elements through the thickness", None),
+    "checkpoint": ("checkpoint interval (steps)", None), "pullout": ("pull-out displacement", "mm"),
+    "minpressure": ("least acceptable pressure", "MPa"), "phasemodel": ("phase model", None),
+    "stepsolver": ("step solver", None), "plane": ("2D model", None), "scale": ("scale", None),
+    "pulldirection": ("pull direction", None), "borefilter": ("bore pressure filter", None),
+    # table columns (the key figures, by their summary key)
+    "final_pressure_mean": ("final mean contact pressure", "MPa"), "peak_pressure_mean": ("peak mean contact pressure", "MPa"),
+    "lame_pressure": ("Lame's shrink-fit pressure", "MPa"), "clamp_pressure": ("clamping pressure", "MPa"),
+    "service_pressure_min": ("least service pressure", "MPa"),
+    "pressure_at_service_Tmin": ("pressure after the hold at the lowest service temperature", "MPa"),
+    "storage_margin": ("storage margin", "K"), "first_contact_time": ("time of first contact", None),
+    "austenite_time": ("time the ring is austenite for good", None),
+    "T_inner_first_contact": ("inner temperature at first contact", "°C"),
+    "T_inner_austenite": ("inner temperature austenite for good", "°C"), "wall": ("wall time", None),
+}
+# SI unit -> the unit shown when WORDS names none (None: the SI unit itself).
+SHOWN = {"Pa": "MPa", "m": "mm", "K": "°C"}
+SCALE = {("Pa", "MPa"): 1e-6, ("Pa", "GPa"): 1e-9, ("m", "mm"): 1e3, ("m", "um"): 1e6}
+PRETTY_UNITS = {"W/(m^2 K)": "W/(m² K)", "kg/m^3": "kg/m³", "um": "µm"}
+
+
+def meaning_words(meaning):
+    """The head of an option's -help meaning, as words: "threshold k (Pa) of ..." -> "threshold k";
+    "Pa: end traction" -> "end traction"."""
+    lead = re.match(r"([^\s:]+):\s+(.*)", meaning)
+    if lead and is_unit(lead.group(1)):
+        meaning = lead.group(2)
+    return re.split(r"\s*[(;:,]", meaning, maxsplit=1)[0].strip() or meaning
+
+
+def shown_unit(name, unit):
+    """The unit `name` (an option, or a column's key) is shown in, given its SI unit."""
+    listed = WORDS.get(name, (None, None))[1]
+    if listed and (unit, listed) in SCALE or (unit == "K" and listed in ("°C", "K")):
+        return listed
+    return SHOWN.get(unit, unit) if unit else ""
+
+
+def shown(name, unit, value):
+    """An SI value (a number or numpy array) of `name` in its shown unit (shown_unit)."""
+    to = shown_unit(name, unit)
+    if unit == "K" and to == "°C":
+        return units.celsius(value)
+    return value * SCALE.get((unit, to), 1.0)
+
+
+def words_of(name, meaning=None):
+    """The words of an option or a column key: WORDS's, else the head of the -help meaning, else the
+    name with spaces."""
+    if name in WORDS:
+        return WORDS[name][0]
+    return meaning_words(meaning) if meaning else name.replace("_", " ")
+
+
+def axis_label(name, unit, meaning=None):
+    """An axis label in words with the shown unit: "interference (mm)", "time steps"."""
+    to = shown_unit(name, unit)
+    return words_of(name, meaning) + (f" ({PRETTY_UNITS.get(to, to)})" if to else "")
+
+
+def value_label(param, value, unit, meaning=None):
+    """A legend entry in words, the value in the shown unit: "interference 0.05 mm" for
+    -interference 5e-05, "air temperature 20 °C" for -Text 293.15 or -Text 20C; a value that is not
+    a number as typed."""
     text = str(value)
     word = units.temperature_word(text) if unit == "K" else None
-    if word and word[1] == "C":
-        return f"-{param} {word[0]} °C"
-    if unit == "K":
-        number = word[0] if word else text
-        try:
-            return f"-{param} {number} K ({units.celsius(float(number)):.4g} °C)"
-        except ValueError:
-            pass
-    return f"-{param} {text}" + (f" {unit}" if unit else "")
+    to = shown_unit(param, unit)
+    try:
+        number = float(word[0]) + (units.KELVIN_AT_0C if word[1] == "C" else 0.0) if word else float(text)
+    except ValueError:
+        return f"{words_of(param, meaning)} = {text}"
+    return f"{words_of(param, meaning)} = {shown(param, unit, number):.6g}" + (f" {PRETTY_UNITS.get(to, to)}" if to else "")
+
+
+def column_key(column):
+    """(summary key, SI unit) of a table column named with its unit: final_pressure_mean_Pa ->
+    (final_pressure_mean, Pa); wall_s -> (wall, s); a column without a unit -> (column, "")."""
+    for unit in ("Pa", "K", "m", "s"):
+        if column.endswith("_" + unit):
+            return column[:-len(unit) - 1], unit
+    return column, ""
 
 
 def step_time(history, step):
@@ -280,11 +364,12 @@ def draw(out, scene, param, values, runs, plt, unit="", fixed=None):
     temperature = [(h["T_inner_mean"] - KELVIN_AT_0C, h["pressure_mean"] / 1e6) for h in histories]
     time = [(h["t"], h["pressure_mean"] / 1e6) for h in histories]
     groups = coincident_groups(time)
-    labels = [", ".join(value_label(param, values[i], unit) for i in g) + (" (coincide within 0.1 %)" if len(g) > 1 else "")
-              for g in groups]
+    meaning = driver.options(scene)[param]["meaning"]
+    labels = [", ".join(value_label(param, values[i], unit, meaning) for i in g)
+              + (" (coincide within 0.1 %)" if len(g) > 1 else "") for g in groups]
     # The options every run shares, in the title: the figure says what was held fixed.
     held = " ".join(f"-{k} {v}" for k, v in (fixed or {}).items())
-    title = f"{scene}: sweep of -{param}" + (f"\n(all runs: {held})" if held else "")
+    title = f"{scene}: {words_of(param, meaning)} swept (-{param})" + (f"\n(all runs: {held})" if held else "")
     written = []
 
     fig, ax = plt.subplots(figsize=(7, 4.5))
@@ -324,9 +409,69 @@ def draw(out, scene, param, values, runs, plt, unit="", fixed=None):
     return written, [[values[i] for i in g] for g in groups]
 
 
+# Lines of a sweep's figure that coincide (docs/parameters.md, coinciding curves): within this
+# fraction of the y axis' span at every x, as tools/plot/sleeve_curves.py's force curves.
+LINE_COINCIDE = 0.01
+LINE_STYLES = ("-", "--", ":")  # within a group of coinciding lines
+
+
+def line_groups(lines):
+    """Groups the lines [(xs, ys)] (lists, NaN allowed) that coincide within LINE_COINCIDE of the y
+    span at every x (the same xs); returns [(indices, largest difference as a fraction of the span)]."""
+    finite = [y for _, ys in lines for y in ys if y == y]
+    span = ((max(finite) - min(finite)) if finite else 0.0) or 1.0
+
+    def gap(a, b):
+        (xa, ya), (xb, yb) = lines[a], lines[b]
+        if list(xa) != list(xb):
+            return math.inf
+        return max((abs(u - v) for u, v in zip(ya, yb) if u == u and v == v), default=0.0) / span
+    groups = []
+    for k in range(len(lines)):
+        for group in groups:
+            if all(gap(k, m) <= LINE_COINCIDE for m in group):
+                group.append(k)
+                break
+        else:
+            groups.append([k])
+    return [(g, max((gap(a, b) for a in g for b in g if a < b), default=0.0)) for g in groups]
+
+
+def draw_lines(ax, lines, labels, markers=None):
+    """Draws the lines [(xs, ys)], each seen: coinciding lines (line_groups) in one colour, the first
+    wide and pale, the others thin, dashed and dotted over it; each line keeps its own label, and the
+    legend (returned handles and labels) says a group once: "a, b (coincide within 0.4 % of full scale)"."""
+    handles, names = [], []
+    for n, (group, worst) in enumerate(line_groups(lines)):
+        for j, k in enumerate(group):
+            under = j == 0 and len(group) > 1
+            marker = markers[k] if markers else "o"
+            line, = ax.plot(*lines[k], color=f"C{n}", marker=marker, ms=10 if under else 6 - (j > 0),
+                            ls=LINE_STYLES[j % 3], lw=3 if under else 1.2, alpha=0.45 if under else 1,
+                            mfc="white" if j > 0 else f"C{n}", label=labels[k])
+            if j == 0:
+                handles.append(line)
+                names.append(said_once([labels[m] for m in group], worst))
+    return handles, names
+
+
+def said_once(labels, worst):
+    """The legend entry of coinciding lines: their labels joined, the words before " = " said once
+    when they share them ("g = 250 W/(m² K), 1000 W/(m² K)"), and how close they are."""
+    if len(labels) == 1:
+        return labels[0]
+    heads = {str(label).split(" = ", 1)[0] for label in labels}
+    if len(heads) == 1 and all(" = " in str(label) for label in labels):
+        text = heads.pop() + " = " + ", ".join(str(label).split(" = ", 1)[1] for label in labels)
+    else:
+        text = " = ".join(str(label) for label in labels)
+    return text + (" (identical)" if worst == 0 else f" (coincide within {100 * worst:.2g} % of full scale)")
+
+
 # The coupling's life (sleeve-life): its design figures against the swept parameter.
 DESIGN_PRESSURES = [("clamp_pressure", "clamping (end of heating)"), ("service_pressure_min", "service minimum"),
                     ("pressure_at_service_Tmin", "after the hold at the lowest service temperature")]
+DESIGN_MARKERS = ("o", "D", "^")  # one per line of DESIGN_PRESSURES
 
 
 def design_chart(out, scene, param, values, runs, plt, unit="", fixed=None):
@@ -340,24 +485,32 @@ def design_chart(out, scene, param, values, runs, plt, unit="", fixed=None):
     except (TypeError, ValueError):
         return []
     order = sorted(range(len(x)), key=lambda i: x[i])
-    xs = [x[i] for i in order]
-    fig, ax = plt.subplots(figsize=(7, 4.5))
-    for key, label in DESIGN_PRESSURES:
-        ys = [runs[i].summary.get(key) for i in order]
-        ax.plot(xs, [float("nan") if y is None else y / 1e6 for y in ys], marker="o", lw=1.2, label=label)
-    ax.axhline(runs[0].summary["min_pressure"] / 1e6, color="k", ls="--", lw=0.8, label="-minpressure")
-    ax.set_xlabel(f"-{param}" + (f" ({unit})" if unit else ""))
+    xs = [shown(param, unit, x[i]) for i in order]
+    meaning = driver.options(scene)[param]["meaning"]
+    fig, ax = plt.subplots(figsize=(7, 5.6))
+    # Every line seen: each its own marker; lines that coincide share one legend entry (draw_lines).
+    curves = [[float("nan") if runs[i].summary.get(key) is None else runs[i].summary[key] / 1e6 for i in order]
+              for key, _ in DESIGN_PRESSURES]
+    handles, names = draw_lines(ax, [(xs, ys) for ys in curves], [label for _, label in DESIGN_PRESSURES],
+                                DESIGN_MARKERS)
+    ax.axhline(runs[0].summary["min_pressure"] / 1e6, color="k", ls="--", lw=0.8,
+               label="least acceptable pressure (-minpressure)")
+    ax.set_xlabel(axis_label(param, unit, meaning))
     ax.set_ylabel("mean contact pressure (MPa)")
+    ax.ticklabel_format(axis="x", style="plain", useOffset=False)
     ax.grid(alpha=0.3)
     margin = ax.twinx()
     margin.plot(xs, [runs[i].summary["storage_margin"] for i in order], color="0.4", ls=":", marker="s",
-                lw=1.0, label="storage margin (K, right)")
+                lw=1.0, label="storage margin (K, right axis)")
     margin.set_ylabel("storage margin: reverse start - storage T (K)")
-    handles = ax.get_legend_handles_labels()
+    margin.ticklabel_format(axis="y", useOffset=False)
+    line = ax.get_lines()[-1]  # the -minpressure line
     extra = margin.get_legend_handles_labels()
-    ax.legend(handles[0] + extra[0], handles[1] + extra[1], fontsize=8, loc="best")
+    ax.legend(handles + [line] + extra[0], names + [line.get_label()] + extra[1], fontsize=7, loc="upper center",
+              bbox_to_anchor=(0.5, -0.14))  # below the axes: no point hidden
     held = " ".join(f"-{k} {v}" for k, v in (fixed or {}).items())
-    ax.set_title(f"{scene}: design chart over -{param}" + (f"\n(all runs: {held})" if held else ""))
+    ax.set_title(f"{scene}: design chart over the {words_of(param, meaning)} (-{param})"
+                 + (f"\n(all runs: {held})" if held else ""), fontsize=10)
     fig.tight_layout()
     path = os.path.join(out, "design-chart.png")
     save(fig, path, 110)
@@ -581,6 +734,7 @@ def draw_grid(out, scene, params, combos, runs, rows, header, fixed, plt):
     final-pressure.png (plot() of the table). Returns the paths written."""
     options = driver.options(scene)
     units = {p: unit_of(options[p]["meaning"]) for p in params}
+    meanings = {p: options[p]["meaning"] for p in params}
     first, others = params[0], params[1:]
     panels = []
     for c in combos:
@@ -596,8 +750,8 @@ def draw_grid(out, scene, params, combos, runs, rows, header, fixed, plt):
             if c[1:] == panel:
                 h = r.history
                 ax.plot(h["T_inner_mean"] - KELVIN_AT_0C, h["pressure_mean"] / 1e6, lw=1.2,
-                        label=value_label(first, c[0], units[first]))
-        ax.set_title(", ".join(value_label(p, v, units[p]) for p, v in zip(others, panel)), fontsize=9)
+                        label=value_label(first, c[0], units[first], meanings[first]))
+        ax.set_title(", ".join(value_label(p, v, units[p], meanings[p]) for p, v in zip(others, panel)), fontsize=9)
         ax.grid(alpha=0.3)
         ax.legend(fontsize=7)
     for ax in axes.flat[len(panels):]:
@@ -606,7 +760,7 @@ def draw_grid(out, scene, params, combos, runs, rows, header, fixed, plt):
         ax.set_xlabel("mean inner-surface temperature (°C)")
     for ax in axes[:, 0]:
         ax.set_ylabel("mean contact pressure (MPa)")
-    fig.suptitle(f"{scene}: sweep of " + " x ".join(f"-{p}" for p in params)
+    fig.suptitle(f"{scene}: " + " x ".join(f"{words_of(p, meanings[p])} (-{p})" for p in params) + " swept"
                  + (f"\n(all runs: {held})" if held else ""), fontsize=10)
     fig.tight_layout()
     written = [os.path.join(out, "force-temperature.png")]
@@ -654,7 +808,8 @@ def plot(table, y="final_pressure_mean_Pa", x=None, by=None, ax=None):
     """Draws a key figure of a sweep's table against one swept parameter, one line per fixed value
     of the others: `table` a DataFrame of sweep() (or read_sweep()); `y` a column; `x` a swept
     parameter's name (default: the first); `by` the parameters that make the lines (default: the
-    others). A column given in Pa is drawn in MPa. Returns the matplotlib Axes (a new figure's
+    others). The axes and the legend say words with their units (sweeps.WORDS: pressures in MPa,
+    lengths in mm, temperatures in °C), without offset. Returns the matplotlib Axes (a new figure's
     unless `ax`). Fails (SceneError) naming an unknown column or parameter."""
     params = table.attrs.get("params")
     if not params:
@@ -670,22 +825,38 @@ def plot(table, y="final_pressure_mean_Pa", x=None, by=None, ax=None):
         raise SceneError(f"by = {unknown}: not swept parameters other than x ({', '.join(params)})")
     if ax is None:
         ax = pyplot().subplots(figsize=(7, 4.5))[1]
-    scale, y_label = (1e-6, y[:-len("_Pa")] + " (MPa)") if y.endswith("_Pa") else (1.0, y)
+    key_of_y, y_unit = column_key(y)
+    y_label = axis_label(key_of_y, y_unit)
     keys = [params[p] for p in by]
     groups = table.groupby(keys if len(keys) > 1 else keys[0], sort=False) if by else [((), table)]
     def unit(p):  # the unit in a parameter's column name (interference_m: m)
         return params[p][len(p) + 1:]
+    lines, labels = [], []
     for key, part in groups:
         key = key if isinstance(key, tuple) else (key,)
         part = part.sort_values(params[x])
-        label = ", ".join(value_label(p, f"{v:g}" if isinstance(v, (int, float)) else v, unit(p)) for p, v in zip(by, key))
-        ax.plot(part[params[x]], part[y] * scale, "o-", lw=1.2, label=label or None)
-    ax.set_xlabel(f"-{x}" + (f" ({unit(x)})" if unit(x) else ""))
+        labels.append(", ".join(value_label(p, f"{v:g}" if isinstance(v, (int, float)) else v, unit(p))
+                                for p, v in zip(by, key)) or None)
+        xs, ys = part[params[x]], part[y]
+        lines.append((list(shown(x, unit(x), xs) if is_number(xs) else xs), list(shown(key_of_y, y_unit, ys))))
+    handles, names = draw_lines(ax, lines, labels)
+    ax.set_xlabel(axis_label(x, unit(x)))
     ax.set_ylabel(y_label)
+    for axis in ("x", "y"):  # no offset: the tick labels are the values
+        try:
+            ax.ticklabel_format(axis=axis, useOffset=False)
+        except AttributeError:  # a categorical axis (a string option)
+            pass
     ax.grid(alpha=0.3)
     if by:
-        ax.legend(fontsize=8)
+        ax.legend(handles, names, fontsize=8)
     return ax
+
+
+def is_number(column):
+    """Whether a DataFrame column holds numbers (a real or int option), not words."""
+    import pandas as pd
+    return pd.api.types.is_numeric_dtype(column)
 
 
 def sweep(scene, grid, fixed=None, jobs=2, out=None):

@@ -8,7 +8,8 @@ scene's 1000 time steps at every level (the time step is not refined: the study 
 mesh's share of the error), square cells (-nz 0), nr elements through the thickness:
   rigid pipe:         nr 2, 3, 4, 6, 8, 12;
   steel shaft:        nr 2, 4, 8 (-pipeE 200e9 -pipenu 0.28, the pipe meshed with the ring's cells).
-The pull-out force is the sliding plateau's |F| (= mu N, every node slipping). Observed order
+The pull-out force is the sliding plateau's F, summary.json's pullout_force_final (= mu N, every
+node slipping; > 0: the sleeve's force on the pipe against its motion, docs/parameters.md). Observed order
 p = log2((F_h - F_h/2) / (F_h/2 - F_h/4)) from each doubling triple (rigid: 2-4-8 and 3-6-12;
 steel: 2-4-8); the reference is the Richardson extrapolation of the two finest doubling levels
 with the finer triple's p, and each level's error is against it. Time to 1 % (and 0.1 %): the
@@ -46,7 +47,7 @@ def run_level(out, nr, extra):
         sys.exit(f"bench_pullout: {SCENE} -nr {nr} {' '.join(extra)} failed: {lines[-1] if lines else proc.returncode}")
     s = json.load(open(os.path.join(out, "summary.json")))
     return {"nr": nr, "nz": s["parameters"]["nz"], "nodes": s["nodes"] + s.get("pipe", {}).get("nodes", 0),
-            "pullout_force": s["pullout_force_max"], "force_over_mu_normal": s["pullout_force_over_mu_normal"],
+            "pullout_force": s["pullout_force_final"], "force_over_mu_normal": s["pullout_force_over_mu_normal"],
             "wall_seconds": wall, "loop_seconds": s["wall_seconds"]}
 
 
@@ -92,7 +93,8 @@ def section(rec, plt, save):
     w = lines.append
     w("sleeve-axisymmetric at the paper's scale, L = 10 cm, mu 0.2, the pipe moved 1 mm after clamping "
       "(`-mu 0.2 -pullout 1e-3 -pullsteps 25`), 1000 time steps at every level (only the mesh is refined), "
-      "square cells; the pull-out force is the sliding plateau mu N. Reference: Richardson's extrapolation of "
+      "square cells; the pull-out force is the sliding plateau mu N (the sleeve's force on the pipe, > 0 "
+      "against its motion). Reference: Richardson's extrapolation of "
       "the two finest doubling levels with their observed order; time: the whole process "
       "(tools/bench/pullout.py).")
     w("")
