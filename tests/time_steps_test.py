@@ -18,6 +18,11 @@ it over the run):
 sleeve-elliptic-friction at -steps 100 (the step the nested loops could not solve, step 39 of
 100: a slip-threshold fixed point at its limit) is solved in halves: exit 0, steps_retried >= 1,
 step_splits >= 1, every node inside the Coulomb cone at the end.
+sleeve-elliptic at -tol 1e-3 (its steps at the reversion's onset cost up to 14 000 products whole):
+a trial that spends the step solver's budget of products (errors.idp stepTrialWorkMax) is taken again
+shorter, not by the nested loops: exit 0, steps_retried >= 1 with the budget named in the note,
+step_fallbacks 0, no accepted step above the budget, and the final pressure the 1500-step run's to
+1e-6.
 Runs into build/test-results/time-steps-*/; writes results/checks/time_steps.json.
 """
 import os
@@ -68,7 +73,8 @@ def main():
                   f"{name}: {s['steps_rejected']} steps rejected and taken again, accepted ratios <= 1 "
                   f"(max {s['step_error_ratio_max']:.3f})")
             gaps = max(abs(dt[i] - (t[i] - (t[i - 1] if i else 0.0))) for i in range(len(t)))
-            check(gaps <= 1e-12 * t[-1] and t[-1] == s["parameters"]["tend"] and
+            # (history.csv writes 12 significant digits: t = 102.174398274 is known to 5e-10)
+            check(gaps <= 1e-11 * t[-1] and t[-1] == s["parameters"]["tend"] and
                   max(dt) <= s["dt_max"] * (1 + 1e-12) and all(x > 0 for x in dt),
                   f"{name}: {len(t)} rows, dt = the differences of t (to {gaps:.1e}), 0 < dt <= dt_max "
                   f"{s['dt_max']}, the last t {t[-1]} = tend")
@@ -102,6 +108,24 @@ def main():
         check(s["final_nodes_inside_cone"] == s["final_nodes_in_contact"] > 0,
               f"sleeve-elliptic-friction -steps 100: {s['final_nodes_inside_cone']} of "
               f"{s['final_nodes_in_contact']} nodes in contact inside the Coulomb cone")
+    # A trial that spends the step solver's budget is taken again shorter.
+    out, proc = run("sleeve-elliptic", "elliptic-budget", "-tol", "1e-3", "-vtkevery", "0")
+    ref, proc_ref = run("sleeve-elliptic", "elliptic-fixed", "-vtkevery", "0")
+    check(proc.returncode == 0 == proc_ref.returncode,
+          f"sleeve-elliptic -tol 1e-3 exit {proc.returncode}, default exit {proc_ref.returncode}: {proc.stderr[-300:]}")
+    if proc.returncode == 0 == proc_ref.returncode:
+        s, fixed = summary_of(out), summary_of(ref)
+        accepted_max = max(int(r["dc_iterations"]) for r in rows(os.path.join(out, "history.csv")))
+        data["elliptic_budget"] = {"steps_retried": s["steps_retried"], "step_fallbacks": s["step_fallbacks"],
+                                   "step_products": s["step_products"], "accepted_step_solves_max": accepted_max}
+        check(s["steps_retried"] >= 1 and "budget" in proc.stdout + proc.stderr and s["step_fallbacks"] == 0,
+              f"sleeve-elliptic -tol 1e-3: {s['steps_retried']} trial(s) taken again shorter, "
+              f"{s['step_fallbacks']} given to the nested loops (want >= 1 on the budget, 0)")
+        check(accepted_max <= 2000 + 600, f"sleeve-elliptic -tol 1e-3: an accepted step took {accepted_max} "
+              "stiffness solves, above the trial budget (2000 products and the last Newton iteration's)")
+        check(abs(s["final_pressure_mean"] / fixed["final_pressure_mean"] - 1) < 1e-6,
+              f"sleeve-elliptic -tol 1e-3: final pressure {s['final_pressure_mean']:.6e} against the fixed "
+              f"steps' {fixed['final_pressure_mean']:.6e}")
     record("time_steps", data)
     finish()
 

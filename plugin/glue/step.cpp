@@ -70,12 +70,14 @@ Eigen::VectorXd Segment(KN<double>* a, long start, long length, const char* what
 // moves, dense Newton moves]. Returns the iterations.
 // settings[20] (optional) = 1: a step that does not converge leaves chi, u and the table's slip
 // thresholds as they came in (the step's start, for the caller's fall-back: no copies of them).
+// settings[21] (optional): a trial's budget of products (StepSettings::product_budget; 0: none);
+// stats[14] (when stats has 15 entries) = 1 when the step stopped on it.
 long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM<double>* const& table,
                        KN<double>* const& contact, KN<double>* const& chi, KN<double>* const& T,
                        KN<double>* const& u, KN<double>* const& stats) {
   return guarded("StepSolveFraction", [&] {
-    if (settings->N() != 20 && settings->N() != 21) throw std::invalid_argument("settings must have 20 or 21 values");
-    const bool keepStartUnconverged = settings->N() == 21 && (*settings)[20] != 0;
+    if (settings->N() < 20 || settings->N() > 22) throw std::invalid_argument("settings must have 20 to 22 values");
+    const bool keepStartUnconverged = settings->N() >= 21 && (*settings)[20] != 0;
     const long slot = lrint((*settings)[0]);
     if (slot < 0 || slot >= (long)StepSlots().size())
       throw std::invalid_argument("no step operators in slot " + std::to_string(slot) + " (StepOperatorsSet first)");
@@ -92,6 +94,7 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
     sma::StepSettings set;
     set.tol = (*settings)[10];
     set.maxit = (int)lrint((*settings)[11]);
+    if (settings->N() == 22) set.product_budget = (int)lrint((*settings)[21]);
     if (std::getenv("SMA_STEP_TRACE")) set.trace = stderr;  // docs/parameters.md, "Step solver"
     p.psor.omega = (*settings)[12];
     p.psor.tol = (*settings)[13];
@@ -121,7 +124,7 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
       throw std::invalid_argument("the contact table must have 6 columns and a row per contact node (" +
                                   std::to_string(m) + ", from contact's length)");
     if (contact->N() != 4 * m) throw std::invalid_argument("contact must hold tangentFree, mu and r: 4 values per node");
-    if (stats->N() != 14) throw std::invalid_argument("stats must have 14 entries");
+    if (stats->N() != 14 && stats->N() != 15) throw std::invalid_argument("stats must have 14 or 15 entries");
     p.gap.resize(m);
     p.slip_reference.resize(m);
     Eigen::VectorXd threshold(m);
@@ -151,6 +154,7 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
                                res.residual, (double)res.curvature_steps, (double)res.saddle_steps,
                                (double)res.dense_steps, (double)res.reused_solves};
     for (int k = 0; k < 14; ++k) (*stats)[k] = values[k];
+    if (stats->N() == 15) (*stats)[14] = res.budget_spent ? 1.0 : 0.0;
     StepFailure() = res.failure;
     return (long)res.iterations;
   });
