@@ -35,10 +35,42 @@ def first_sustained(values, threshold=0.0, run=2):
     return 0
 
 
+def settled_from(values, tolerance):
+    """The 1-based step from which every value stays within tolerance of the last one (a force that
+    no longer changes, a temperature spread that stays small); 1 when all do, 0 for no values."""
+    if len(values) == 0:
+        return 0
+    off = [i for i, v in enumerate(values) if abs(v - values[-1]) > tolerance]
+    return off[-1] + 2 if off else 1
+
+
+def release_episodes(values, drop=0.1):
+    """How many times a value (a node's contact pressure) falls from a peak by at least `drop` of the
+    highest it ever reaches, each fall counted once however long it lasts: a further fall counts only
+    after the value rose again by as much from its lowest. Each such fall is a contact then a release;
+    smaller wiggles (a step's noise on a small force) are not."""
+    values = list(values)
+    if not values or max(values) <= 0:
+        return 0
+    size, count, peak, trough = drop * max(values), 0, values[0], None
+    for v in values:
+        if trough is not None:              # falling since the last release: wait for a rise as large
+            trough = min(trough, v)
+            if v >= trough + size:
+                peak, trough = v, None
+        elif v > peak:
+            peak = v
+        elif v <= peak - size:
+            count, trough = count + 1, v
+    return count
+
+
 def joined(*texts):
     """The verdicts (or measures) of a row's runs, one word when they are all the same; the runs
     not measured ("") are left out of the comparison but keep their place."""
     given = [t for t in texts if t != ""]
+    if not given:
+        return ""
     if len(set(given)) == 1:
         return given[0]
     return " / ".join(t if t != "" else "-" for t in texts)
@@ -61,18 +93,23 @@ def pct(x):
 
 def counts_line(verdicts, sides=("Default model", "On/off scheme", "The paper's algorithm replayed")):
     """The table's state in one line. verdicts: (joined verdict, explanation, measured on each side,
-    fitted). Counts the words on each run, the rows where the default does not agree that are
-    explained by a run and those open, and the agreements that were fitted."""
+    fitted). Counts the statements no run measures (no output shows them), the words on each run,
+    the rows where the default does not agree that are explained by a run and those open, and the
+    agreements that were fitted."""
     parts = []
+    unmeasured = sum(1 for _, _, measured, _ in verdicts if not any(measured))
     for side, name in enumerate(sides):
         words = [side_word(v, side) for v, _, measured, _ in verdicts if measured[side]]
         tally = ", ".join(f"{words.count(w)} {w}" for w in WORDS if words.count(w))
-        parts.append(f"{name}: {tally}" + ("" if side == 0 else f" (of the {len(words)} statements measured on it)"))
-    rest = [e for v, e, _, _ in verdicts if side_word(v, 0) != "agrees"]
+        parts.append(f"{name}: {tally}" + ("" if side == 0 and len(words) == len(verdicts) - unmeasured
+                                           else f" (of the {len(words)} statements measured on it)"))
+    rest = [e for v, e, measured, _ in verdicts if measured[0] and side_word(v, 0) != "agrees"]
     explained = sum(1 for e in rest if e.startswith("explained"))
     opened = sum(1 for e in rest if e.startswith("open"))
     agreeing = [f for v, _, _, f in verdicts if side_word(v, 0) == "agrees"]
-    return (f"**In one line:** {len(verdicts)} statements. " + ". ".join(parts) + ". "
+    return (f"**In one line:** {len(verdicts)} statements"
+            + (f", {unmeasured} of them not measured (no output of the runs shows them: the row names the "
+               "output needed)" if unmeasured else "") + ". " + ". ".join(parts) + ". "
             f"Of the {len(rest)} where the default does not agree: {explained} explained by a run, {opened} open, "
             f"{len(rest) - explained - opened} with a note only. Of the default's {len(agreeing)} agreements, "
             f"{sum(agreeing)} fitted (a parameter chosen to meet that statement) and {len(agreeing) - sum(agreeing)} "
