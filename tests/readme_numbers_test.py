@@ -1,0 +1,69 @@
+#!/usr/bin/python3
+"""README's numbers are the runs' numbers: each figure README quotes of a default run (and of the
+steel shaft and pull-out variants it names) is read from this checkout's run, formatted to the
+digits README prints, and must appear in README as written. A number typed once and left behind
+when the model moved (README said 0.151 GPa for the steel shaft, the runs 0.150) fails here.
+
+Runs (paper scale, about 15 s in all): sleeve-circular at its defaults and with `-pipeE 2e11`,
+sleeve-radial at its defaults and with `-pipeE 2e11` (Lamé's compound pressure), sleeve-axisymmetric
+at its defaults and with `-mu 0.2 -pullout 1e-3`, sleeve-circular-gvar (its austenite time).
+Writes results/checks/readme_numbers.json.
+"""
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checklib import ROOT, check, finish, record, run_scene_captured, summary_of  # noqa: E402
+
+sys.path.insert(0, os.path.join(ROOT, "tools", "docs"))
+from paper_scale_metrics import curve  # noqa: E402
+
+
+def run(scene, name, *args):
+    out, done = run_scene_captured(scene, "readme-" + name, "-quiet", "1", *args)
+    check(done.returncode == 0, f"{scene} {' '.join(args)}: exit {done.returncode} {done.stdout[-300:]}")
+    return out if done.returncode == 0 else None
+
+
+def main():
+    readme = open(os.path.join(ROOT, "README.md"), encoding="utf-8").read()
+    flat = " ".join(readme.split())  # README wraps its lines; a phrase may straddle two
+    quoted = {}
+    circular = run("sleeve-circular", "circular", "-vtkevery", "0")
+    steel = run("sleeve-circular", "circular-steel", "-vtkevery", "0", "-pipeE", "2e11")
+    radial = run("sleeve-radial", "radial")
+    radial_steel = run("sleeve-radial", "radial-steel", "-pipeE", "2e11")
+    axi = run("sleeve-axisymmetric", "axisymmetric")
+    pull = run("sleeve-axisymmetric", "pullout", "-mu", "0.2", "-pullout", "1e-3")
+    gvar = run("sleeve-circular-gvar", "gvar", "-vtkevery", "0")
+    if circular:
+        s, c = summary_of(circular), curve(circular)
+        quoted["sleeve-circular"] = [f"uniform final pressure {s['final_pressure_mean'] / 1e9:.3f} GPa",
+                                     f"contact at {s['T_inner_first_contact'] - 273.15:.1f} C",
+                                     f"the reversion from {c['T_onset_C']:.1f} C"]
+        if gvar:
+            quoted["sleeve-circular-gvar"] = [f"reached in {curve(gvar)['t_final_s']:.1f} s instead of "
+                                              f"{c['t_final_s']:.1f} s"]
+    if circular and steel and radial_steel:
+        quoted["steel shaft"] = [f"from {summary_of(circular)['final_pressure_mean'] / 1e9:.3f} to "
+                                 f"{summary_of(steel)['final_pressure_mean'] / 1e9:.3f} GPa",
+                                 f"`-pipeE 2e11`: {summary_of(steel)['final_pressure_mean'] / 1e6:.1f} MPa; "
+                                 f"Lamé {summary_of(radial_steel)['lame_pressure'] / 1e6:.1f} MPa"]
+    if radial:
+        quoted["sleeve-radial"] = [f"final pressure = Lamé ({summary_of(radial)['final_pressure_mean'] / 1e6:.2f} MPa"]
+    if axi:
+        s = summary_of(axi)
+        quoted["sleeve-axisymmetric"] = [f"final pressure at mid-length {s['final_pressure_mid'] / 1e6:.2f} MPa",
+                                         f"the open-ended thick cylinder's {s['open_cylinder_pressure'] / 1e6:.2f} MPa",
+                                         f"not plane strain's {s['plane_strain_pressure'] / 1e6:.2f}"]
+    if pull:
+        quoted["pull-out"] = [f"the plateau mu N = {summary_of(pull)['pullout_force_final'] / 1e3:.1f} kN"]
+    for what, phrases in quoted.items():
+        for phrase in phrases:
+            check(phrase in flat, f"README quotes the {what} run as the run gives it: '{phrase}'")
+    record("readme_numbers", quoted)
+    finish()
+
+
+if __name__ == "__main__":
+    main()
