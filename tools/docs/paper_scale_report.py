@@ -157,6 +157,9 @@ def write_report(args, rows, best, heat, rnd, best_sp, rnd_ins, on_c, on_g, on_f
     L.append("Score (statements S1, S2, S4, S4b, S5, S6 passed; tie-break |S4a onset - (-30 C)|, "
              "then the smaller a): " + ", ".join("a=%d: %d" % (a, sc[a][0]) for a in As) + ".")
     L.append("")
+    L.append("S4 beyond a (L, T0, C0, k, Tinit, heat faces, pipe temperature): "
+             "[fig17-fit.md](fig17-fit.md).")
+    L.append("")
     L.append("**Chosen a = %d J/(kg K)** (10 x the printed %s would be 3000)." % (best, "300"))
     L.append("")
 
