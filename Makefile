@@ -89,7 +89,8 @@ SLEEVE_RING := -setnumber Ri $(shell awk '$$1 == "Ri" {print $$2}' $(SLEEVE_GEOM
 sleeve_opt_coarse := $(SLEEVE_RING) -setnumber nr 6
 sleeve_opt_quarter := $(SLEEVE_RING) -setnumber nr 18
 # sleeve-circular's mesh: the same 18 layers through the thickness, 18 segments (5 degrees) along
-# the arc: the circular fit is radially symmetric, its error is the layers' (docs/benchmarks.md).
+# the arc: at the reduced scale the circular fit's error is the layers'; at the paper's the arc
+# carries about as much (docs/benchmarks/mesh-refinement.md).
 sleeve_opt_aniso := $(SLEEVE_RING) -setnumber nr 18 -setnumber nt 18
 sleeve_opt_half-coarse := $(sleeve_opt_coarse) -setnumber half 1
 sleeve_opt_half := $(sleeve_opt_quarter) -setnumber half 1

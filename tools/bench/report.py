@@ -126,8 +126,10 @@ def write_doc(r, plt):
           + ", ".join(f"{g['steps']} steps {100 * g['curve_error']:.2f} %" for g in g18)
           + "): with martensite fractions a reverting layer is held on its threshold while its latent "
           "heat arrives, at any dt, and what remains is the resolution of the front by P0 phases, "
-          "order 1 in h (refinement study below). The arc direction hardly matters for this radially "
-          "symmetric fit, hence sleeve-circular's default mesh: 18 layers, 18 segments along the arc.")
+          "order 1 in h (refinement study below). On this radially symmetric fit the arc direction hardly "
+          "matters at the reduced scale, hence sleeve-circular's default mesh: 18 layers, 18 segments along "
+          "the arc; at the paper's scale the arc carries about as much of the reversion window's error as "
+          "the layers (order 2 in the arc, 1 in the layers: benchmarks/mesh-refinement.md).")
     lo = r.get("elliptic_liftoff", [])
     if lo:
         w("- **The elliptic pipe's lift-off** (paper Fig. 25-28: the major axis lets go before the minor one "
