@@ -22,7 +22,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from claims_measures import (angular_variation, axis_nodal_ratio, constant_after_austenite, contact_spread,  # noqa: E402
                              equal_time_comparison, equilibrium_times, five_phases, friction_by_axis,
-                             martensite_at_contact, psor_at_grazing, reversion_abruptness, single_precision_spread,
+                             martensite_at_contact, plotted_points_peak, psor_at_grazing, reversion_abruptness, single_precision_spread,
                              tangential_over_normal_max, temperature_bands, temperature_spread)
 from claims_quotes import QUOTES, said  # noqa: E402
 from claims_rules import counts_line, crossing_verdict, first_sustained, joined, pct, side_word, steps, verdict  # noqa: E402
@@ -351,9 +351,14 @@ def table():
         "solve counts back-solves, not DC iterations")
     rs = summ(default("sleeve-random-threshold"))
     ru, rc, rp = curve(out_of("random-uniform")), curve(out_of("random-coarse")), curve(out_of("random-printed-a"))
-    peak = (lambda x: f"mean force peak/final {x['peak_over_final']:.2f}; a node's up to {x['node_peak_over_final']:.2f}")
-    row("34-35", "random-peak", peak(r), peak(ro), peak(rr),
-        [verdict(x["peak_over_final"] > 1.3, x["node_peak_over_final"] > 1.1) for x in (r, ro, rr)],
+    # the paper plots one point's force: the verdict on the three points a run writes (points.csv);
+    # the best of the inner-surface nodes is shown, not judged
+    plotted = [plotted_points_peak(d) for d in (default("sleeve-random-threshold"),
+               out_of("onoff-sleeve-random-threshold"), replayed("sleeve-random-threshold"))]
+    peak = (lambda x, p: f"plotted points' peak/final {p:.2f}, mean force's {x['peak_over_final']:.2f}; the best "
+            f"node's {x['node_peak_over_final']:.2f}")
+    row("34-35", "random-peak", peak(r, plotted[0]), peak(ro, plotted[1]), peak(rr, plotted[2]),
+        [verdict(p > 1.3, p > 1.05) for p in plotted],
         "open: a late-reverting triangle pushes the surface near it, not the whole ring; the paper plots one "
         "point's force (Fig. 34, as Fig. 12), the closer reading, which no run brings to 1.5. Tried: a uniform "
         f"law of the same standard deviation (results/claims/random-uniform): node up to {ru['node_peak_over_final']:.2f}, "

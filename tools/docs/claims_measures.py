@@ -24,6 +24,14 @@ def points_columns(out):
     return {k: [float(r[k]) for r in rows] for k in rows[0]}
 
 
+def plotted_points_peak(out):
+    """The largest peak over final of the force at the three inner-surface points points.csv
+    writes (the points a figure plots, as the paper plots one point's force, Fig. 12 and 34)."""
+    columns = points_columns(out)
+    peaks = [max(p) / p[-1] for k, p in columns.items() if k.startswith("pressure_") and p[-1] > 0]
+    return max(peaks) if peaks else float("nan")
+
+
 def axis_nodal_ratio(out):
     """Final nodal normal force over tributary length (unfiltered) at the major (90 deg) over the
     minor axis node (0 deg), minus 1, from contact-final.csv; and the signed and absolute sums of
