@@ -846,3 +846,43 @@ TEST(StepNewton, CreepingGradientStepsHandOverToTheDenseMove) {
   EXPECT_EQ(two.products, off.products);  // no two creeping iterations in a row
   EXPECT_EQ(two.dense, 0);
 }
+
+TEST(StepNewton, ProductBudgetStopsATrialUnconverged) {
+  // The radial sleeve at the paper's scale: with a budget of one product the run stops at the
+  // first step that needs a second iteration, unconverged on the budget and saying so (a trial the
+  // caller takes again shorter), every step before it the same as without a budget; with a budget
+  // above what every step needs, the whole run is the same, bit for bit.
+  const auto paper_scale = [](RadialSleeve& rs) {
+    rs.a = 3000;
+    rs.Ri = rs.pipe - 5e-4;
+    rs.steps = 600;
+    rs.tend = 90;
+    rs.build();
+  };
+  const auto nothing = [](const sma::StepProblem&, const Eigen::VectorXd&, const Eigen::VectorXd&,
+                          const Eigen::VectorXd&, const Eigen::VectorXd&) {};
+  RadialSleeve free_rs, cut_rs, roomy_rs;
+  paper_scale(free_rs), paper_scale(cut_rs), paper_scale(roomy_rs);
+  const std::vector<StepRecord> free = run(free_rs, sma::StepSettings{}, nothing);
+  ASSERT_EQ((int)free.size(), free_rs.steps);
+  int most = 0;
+  for (const StepRecord& rec : free) most = std::max(most, rec.result.products);
+  sma::StepSettings tight;
+  tight.product_budget = 1;
+  const std::vector<StepRecord> cut = run(cut_rs, tight, nothing);
+  ASSERT_LT(cut.size(), free.size());
+  const sma::StepResult& stopped = cut.back().result;
+  EXPECT_FALSE(stopped.converged);
+  EXPECT_TRUE(stopped.budget_spent);
+  EXPECT_GT(stopped.products, 1);
+  EXPECT_NE(stopped.failure.find("budget"), std::string::npos) << stopped.failure;
+  for (std::size_t k = 0; k + 1 < cut.size(); ++k) EXPECT_EQ(cut[k].pressure, free[k].pressure) << "step " << k;
+  sma::StepSettings roomy;
+  roomy.product_budget = most + 1;
+  const std::vector<StepRecord> same = run(roomy_rs, roomy, nothing);
+  ASSERT_EQ(same.size(), free.size());
+  for (std::size_t k = 0; k < same.size(); ++k) {
+    EXPECT_FALSE(same[k].result.budget_spent) << "step " << k;
+    EXPECT_EQ(same[k].pressure, free[k].pressure) << "step " << k;
+  }
+}
