@@ -62,6 +62,16 @@ def run_scene_captured(scene, out_name, *args):
     return out, done
 
 
+def files_under(folder):
+    """Every file under folder, by its path relative to it."""
+    found = {}
+    for base, _, names in os.walk(folder):
+        for name in names:
+            path = os.path.join(base, name)
+            found[os.path.relpath(path, folder)] = path
+    return found
+
+
 def summary_of(out):
     """The summary.json a scene wrote to `out`."""
     return json.load(open(os.path.join(out, "summary.json")))

@@ -23,6 +23,7 @@ import tempfile
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 from checklib import ROOT, check, finish, record  # noqa: E402
+from checklib import files_under as files  # noqa: E402
 
 COMMON = ["-steps", "300", "-quiet", "1"]
 TIMING = ("wall_seconds", "resumed_from_step", "backsolve_floor_seconds_per_step", "loop_over_floor",
@@ -35,13 +36,6 @@ def run(scene, out, *extra):
                            "-out", out], cwd=ROOT, capture_output=True, text=True, timeout=300)
 
 
-def files(folder):
-    found = {}
-    for base, _, names in os.walk(folder):
-        for name in names:
-            path = os.path.join(base, name)
-            found[os.path.relpath(path, folder)] = path
-    return found
 
 
 def differing(a, b):

@@ -29,6 +29,7 @@ import tempfile
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 from checklib import ROOT, check, finish, record  # noqa: E402
+from checklib import files_under as files  # noqa: E402
 
 CASES = [("sleeve-circular", ["-mesh", "meshes/sleeve-coarse.msh"]),
          ("sleeve-elliptic-friction", ["-mesh", "meshes/sleeve-coarse.msh"]),
@@ -47,14 +48,6 @@ def run(scene, out, *extra):
                            "-out", out], cwd=ROOT, capture_output=True, text=True, timeout=300)
 
 
-def files(folder):
-    """Every file under folder, by its path relative to it."""
-    found = {}
-    for base, _, names in os.walk(folder):
-        for name in names:
-            path = os.path.join(base, name)
-            found[os.path.relpath(path, folder)] = path
-    return found
 
 
 def same_files(a, b, skip=("summary.json",)):
