@@ -15,7 +15,8 @@
     it lasts: a steady fall to a low is one, a fall, a rise as large and a fall again are two, and
     a wiggle smaller than a tenth is none;
   - the three runs' verdicts are written once when they agree, each in its place otherwise ("-" for
-    a run that does not measure the row), and read back by position; a row no run measures is
+    a run that does not measure the row; in full when the default does not), and read back by
+    position; a row no run measures is
     written "" (its measure cells say what output it needs);
   - the one-line state counts each run's words over the rows it measures, the rows the default does
     not meet as explained / open / note only, and the default's agreements as fitted / predicted.
@@ -63,7 +64,8 @@ def main():
     check(joined("", "", "") == "", f"a row no run measures: verdict {joined('', '', '')!r} (want '')")
     check(joined("agrees", "agrees", "agrees") == "agrees" and joined("agrees", "", "agrees") == "agrees"
           and joined("agrees", "", "partly") == "agrees / - / partly"
-          and joined("disagrees", "agrees", "agrees") == "disagrees / agrees / agrees",
+          and joined("disagrees", "agrees", "agrees") == "disagrees / agrees / agrees"
+          and joined("", "partly", "partly") == "- / partly / partly",
           "three runs' verdicts: one word when the measured ones agree, each in its place otherwise")
     check(side_word("agrees / - / partly", 1) == "" and side_word("agrees / - / partly", 2) == "partly"
           and side_word("agrees", 2) == "agrees", "a joined verdict read back by position")

@@ -67,11 +67,12 @@ def release_episodes(values, drop=0.1):
 
 def joined(*texts):
     """The verdicts (or measures) of a row's runs, one word when they are all the same; the runs
-    not measured ("") are left out of the comparison but keep their place."""
+    not measured ("") are left out of the comparison but keep their place, and a row the default
+    does not measure is written in full (one word would read as the default's)."""
     given = [t for t in texts if t != ""]
     if not given:
         return ""
-    if len(set(given)) == 1:
+    if len(set(given)) == 1 and texts[0] != "":
         return given[0]
     return " / ".join(t if t != "" else "-" for t in texts)
 
