@@ -33,6 +33,11 @@ _running = set()
 # Reentrant: the handler runs in the main thread, which may hold the lock when the signal comes.
 _lock = threading.RLock()
 _stopped_by = []  # the signal that stopped this process, once one has
+# Set by stop_running (an interrupted or failed sweep stops its runs): a worker thread that was
+# starting a child when the others were stopped stops it too, and none starts another, until the
+# next sweep's pool clears it (allow_running). A KeyboardInterrupt is not a forwarded signal: without
+# this, a run whose child started just after stop_running ran to its end and published.
+_stop_requested = []
 
 
 def _forward(signum, frame):
@@ -83,13 +88,15 @@ def run(args, **kwargs):
     if capture:
         kwargs.setdefault("stdout", subprocess.PIPE)
         kwargs.setdefault("stderr", subprocess.PIPE)
-    if _stopped_by:
-        return subprocess.CompletedProcess(args, 128 + _stopped_by[0], "" if capture else None, "" if capture else None)
+    with _lock:
+        stopped = _stopped_by[0] if _stopped_by else (signal.SIGINT if _stop_requested else 0)
+    if stopped:
+        return subprocess.CompletedProcess(args, 128 + stopped, "" if capture else None, "" if capture else None)
     kwargs.setdefault("preexec_fn", _die_with_parent)
     with terminable(), subprocess.Popen(args, **kwargs) as p:
         with _lock:
             _running.add(p)
-            late = bool(_stopped_by)  # the signal came while this child was starting
+            late = bool(_stopped_by) or bool(_stop_requested)  # stopped while this child was starting
         if late:
             p.terminate()
         try:
@@ -140,7 +147,15 @@ def _end(procs, signum=signal.SIGTERM, reap=True, grace=10.0):
 
 def stop_running():
     """Stops every child still running (a TERM, then SIGKILL after 10 s) and awaits them: an
-    interrupted sweep in a notebook, whose runs wait in other threads, stops them all."""
+    interrupted sweep in a notebook, whose runs wait in other threads, stops them all; a child that
+    was starting meanwhile is stopped as it starts, and none starts after (until allow_running)."""
     with _lock:
+        _stop_requested.append(True)
         procs = list(_running)
     _end(procs)
+
+
+def allow_running():
+    """Children may start again (a new sweep's pool, after an earlier one was stopped)."""
+    with _lock:
+        _stop_requested.clear()

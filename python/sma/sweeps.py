@@ -612,6 +612,7 @@ def stoppable_pool(jobs):
     """A pool of `jobs` threads (each one waits on its FreeFEM process) that, when the caller's
     block is left by an exception (a refused run, a notebook's KeyboardInterrupt), starts no queued
     run and stops the running ones before the exception goes on."""
+    children.allow_running()
     with children.terminable(), concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
         try:
             yield pool
