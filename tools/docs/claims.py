@@ -353,8 +353,7 @@ def table():
     ru, rc, rp = curve(out_of("random-uniform")), curve(out_of("random-coarse")), curve(out_of("random-printed-a"))
     # the paper plots one point's force: the verdict on the three points a run writes (points.csv);
     # the best of the inner-surface nodes is shown, not judged
-    plotted = [plotted_points_peak(d) for d in (default("sleeve-random-threshold"),
-               out_of("onoff-sleeve-random-threshold"), replayed("sleeve-random-threshold"))]
+    plotted = [plotted_points_peak(d) for d in three("sleeve-random-threshold")]
     peak = (lambda x, p: f"plotted points' peak/final {p:.2f}, mean force's {x['peak_over_final']:.2f}; the best "
             f"node's {x['node_peak_over_final']:.2f}")
     row("34-35", "random-peak", peak(r, plotted[0]), peak(ro, plotted[1]), peak(rr, plotted[2]),
