@@ -18,14 +18,18 @@ it over the run):
 sleeve-elliptic-friction at -steps 100 (the step the nested loops could not solve, step 39 of
 100: a slip-threshold fixed point at its limit) is solved in halves: exit 0, steps_retried >= 1,
 step_splits >= 1, every node inside the Coulomb cone at the end.
-sleeve-elliptic at -tol 1e-3 (its steps at the reversion's onset cost up to 14 000 products whole):
-a trial that spends the step solver's budget of products (errors.idp stepTrialWorkMax) is taken again
-shorter, not by the nested loops: exit 0, steps_retried >= 1 with the budget named in the note,
-step_fallbacks 0, no accepted step above the budget, and the final pressure the 1500-step run's to
+sleeve-elliptic at -tol 1e-3 (its steps at the reversion's onset cost up to 14 000 products whole),
+with the step solver's trace (SMA_STEP_TRACE=1): a trial the step solver gives up (its budget of
+products, errors.idp stepTrialWorkMax, spent, or negative-curvature moves that do not halve the
+residual) is taken again shorter, not by the nested loops: exit 0, steps_retried >= 1 and at least
+one trial given up on stalled curvature moves, step_fallbacks 0, the products of the solves not
+converged summing to summary.json's step_products_retried and those of all solves to its
+step_products, no accepted step above the budget, and the final pressure the 1500-step run's to
 1e-6.
 Runs into build/test-results/time-steps-*/; writes results/checks/time_steps.json.
 """
 import os
+import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -109,18 +113,34 @@ def main():
               f"sleeve-elliptic-friction -steps 100: {s['final_nodes_inside_cone']} of "
               f"{s['final_nodes_in_contact']} nodes in contact inside the Coulomb cone")
     # A trial that spends the step solver's budget is taken again shorter.
-    out, proc = run("sleeve-elliptic", "elliptic-budget", "-tol", "1e-3", "-vtkevery", "0")
+    os.environ["SMA_STEP_TRACE"] = "1"
+    try:
+        out, proc = run("sleeve-elliptic", "elliptic-budget", "-tol", "1e-3", "-vtkevery", "0")
+    finally:
+        del os.environ["SMA_STEP_TRACE"]
     ref, proc_ref = run("sleeve-elliptic", "elliptic-fixed", "-vtkevery", "0")
     check(proc.returncode == 0 == proc_ref.returncode,
-          f"sleeve-elliptic -tol 1e-3 exit {proc.returncode}, default exit {proc_ref.returncode}: {proc.stderr[-300:]}")
+          f"sleeve-elliptic -tol 1e-3 exit {proc.returncode}, default exit {proc_ref.returncode}"
+          + (f": {proc.stderr[-300:]}" if proc.returncode else ""))
     if proc.returncode == 0 == proc_ref.returncode:
         s, fixed = summary_of(out), summary_of(ref)
         accepted_max = max(int(r["dc_iterations"]) for r in rows(os.path.join(out, "history.csv")))
         data["elliptic_budget"] = {"steps_retried": s["steps_retried"], "step_fallbacks": s["step_fallbacks"],
                                    "step_products": s["step_products"], "accepted_step_solves_max": accepted_max}
-        check(s["steps_retried"] >= 1 and "budget" in proc.stdout + proc.stderr and s["step_fallbacks"] == 0,
-              f"sleeve-elliptic -tol 1e-3: {s['steps_retried']} trial(s) taken again shorter, "
-              f"{s['step_fallbacks']} given to the nested loops (want >= 1 on the budget, 0)")
+        ends = re.findall(r"^step end: (.*), (\d+) products$", proc.stderr, re.M)
+        given_up = [int(n) for why, n in ends if why != "converged"]
+        curvature = sum("negative-curvature" in why for why, _ in ends)
+        data["elliptic_budget"].update({"solves": len(ends), "given_up": len(given_up),
+                                        "given_up_on_curvature": curvature,
+                                        "step_products_retried": s["step_products_retried"]})
+        check(s["steps_retried"] >= 1 and curvature >= 1 and s["step_fallbacks"] == 0,
+              f"sleeve-elliptic -tol 1e-3: {s['steps_retried']} trial(s) taken again shorter, {curvature} given up "
+              f"on stalled curvature moves, {s['step_fallbacks']} given to the nested loops (want >= 1, >= 1, 0)")
+        check(sum(given_up) == s["step_products_retried"] and
+              sum(int(n) for _, n in ends) == s["step_products"],
+              f"sleeve-elliptic -tol 1e-3: the trace's solves not converged spent {sum(given_up)} products, all "
+              f"{sum(int(n) for _, n in ends)}; summary.json: step_products_retried {s['step_products_retried']}, "
+              f"step_products {s['step_products']}")
         check(accepted_max <= 2000 + 600, f"sleeve-elliptic -tol 1e-3: an accepted step took {accepted_max} "
               "stiffness solves, above the trial budget (2000 products and the last Newton iteration's)")
         check(abs(s["final_pressure_mean"] / fixed["final_pressure_mean"] - 1) < 1e-6,

@@ -187,10 +187,19 @@ struct StepSettings {
   // by column (one product a point), its linearised law solved exactly, the move accepted when
   // it lowers the residual. 0: never (the step stops as before).
   int dense_block = 128;
-  // A trial's budget of products (0: none): a step that has spent more stops unconverged with
-  // StepResult::budget_spent, for a caller that can take it again shorter (a 3 s step into the
-  // reversion's onset spent 14 255 products, the same span taken as a 0.87 s step 674).
+  // A trial's budget of products (0: the step is not a trial, its caller cannot take it shorter):
+  // a step that has spent more stops unconverged with StepResult::trial_given_up, for the caller
+  // to take again shorter (a 3 s step into the reversion's onset spent 14 255 products, the same
+  // span taken as a 0.87 s step 674). A trial also gives up where it stalls (below).
   int product_budget = 0;
+  // In a trial (product_budget > 0), negative-curvature moves in a row that each fail to halve the
+  // residual, after which the step stops as over its budget (0: never); one is enough where the
+  // residual it left is at least trial_stall_residual (fraction units). A step too long for the
+  // transformation's onset creeps so (sleeve-offset -tol 1e-3: six trials of 1.0-0.4 s, each at
+  // 2e-3 to 6e-2 for 3-6 moves of 500-1000 products, 14 570 products in all); the defaults' steps
+  // take no two such moves in a row and none above 5e-4 (sleeve-offset's two, which converge).
+  int trial_curvature_stalls = 2;
+  double trial_stall_residual = 1e-3;
   std::FILE* trace = nullptr;  // one line per iteration there when set (the glue: SMA_STEP_TRACE=1)
 };
 
@@ -207,7 +216,7 @@ struct StepResult {
   int reused_solves = 0;  // stiffness solves the contact memo answered without a back-solve (contact_solve)
   double residual = 0.0;
   std::string failure;  // why it stopped unconverged (empty when converged)
-  bool budget_spent = false;  // stopped by StepSettings::product_budget
+  bool trial_given_up = false;  // a trial stopped for the caller to take shorter (StepSettings::product_budget)
 };
 
 // The state at one iterate chi: everything the step's equations give for it.
@@ -711,11 +720,20 @@ class StepSolver {
     // 250 products each).
     int creeping = 0;  // consecutive such iterations
     bool creeping_tried = false;
+    int curvature_stalls = 0;  // negative-curvature moves in a row that did not halve the residual
     while (s.residual_norm > set.tol && stats_.iterations < set.maxit) {
       if (set.product_budget > 0 && stats_.products > set.product_budget) {
         stats_.failure = "its " + std::to_string(stats_.products) + " products passed the trial's budget of " +
                          std::to_string(set.product_budget);
-        stats_.budget_spent = true;
+        stats_.trial_given_up = true;
+        break;
+      }
+      if (set.product_budget > 0 && set.trial_curvature_stalls > 0 &&
+          (curvature_stalls >= set.trial_curvature_stalls ||
+           (curvature_stalls > 0 && s.residual_norm >= set.trial_stall_residual))) {
+        stats_.failure = std::to_string(curvature_stalls) + " negative-curvature move(s) in a row did not halve the residual (" +
+                         std::to_string(s.residual_norm) + ")";
+        stats_.trial_given_up = true;
         break;
       }
       const int stall = p_.dissipation > 0 ? set.stall_dissipative : set.stall;
@@ -742,6 +760,10 @@ class StepSolver {
       }
       if (stats_.iterations - marked >= stall) {
         stats_.failure = "the residual did not halve in " + std::to_string(stall) + " iterations";
+        // In a trial the step is taken again shorter rather than by the caller's nested loops, which
+        // a trial then stops at their own limits (sleeve-elliptic-friction -tol 1e-3: 1979 products
+        // and the nested loops' iterations for nothing); the last try keeps the fall-back.
+        stats_.trial_given_up = set.product_budget > 0;
         break;
       }
       ++stats_.iterations;
@@ -797,7 +819,9 @@ class StepSolver {
       }
       s = std::move(found.state);
       switch_variants(s);
-      if (tried == NegativeCurvature && !(s.residual_norm <= 0.5 * before)) rounds = std::max(rounds, set.pdas_rounds_stalled);
+      const bool curvature_stalled = tried == NegativeCurvature && !(s.residual_norm <= 0.5 * before);
+      curvature_stalls = curvature_stalled ? curvature_stalls + 1 : 0;
+      if (curvature_stalled) rounds = std::max(rounds, set.pdas_rounds_stalled);
       best = std::min(best, s.residual_norm);
       if (s.residual_norm <= 0.5 * mark) mark = s.residual_norm, marked = stats_.iterations;
       if (set.trace) {
@@ -811,6 +835,9 @@ class StepSolver {
     stats_.converged = s.residual_norm <= set.tol;
     if (!stats_.converged && stats_.failure.empty())
       stats_.failure = std::to_string(stats_.iterations) + " iterations";
+    if (set.trace)
+      std::fprintf(set.trace, "step end: %s, %d products\n", stats_.converged ? "converged" : stats_.failure.c_str(),
+                   stats_.products);
     chi = s.chi;
     r = s.r;
     threshold = s.threshold;

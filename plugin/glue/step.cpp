@@ -154,7 +154,7 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
                                res.residual, (double)res.curvature_steps, (double)res.saddle_steps,
                                (double)res.dense_steps, (double)res.reused_solves};
     for (int k = 0; k < 14; ++k) (*stats)[k] = values[k];
-    if (stats->N() == 15) (*stats)[14] = res.budget_spent ? 1.0 : 0.0;
+    if (stats->N() == 15) (*stats)[14] = res.trial_given_up ? 1.0 : 0.0;
     StepFailure() = res.failure;
     return (long)res.iterations;
   });
