@@ -36,7 +36,8 @@ def main():
     measured = {}
     for scene, scale in CASES:
         tag = f"{scene}-{scale}"
-        fraction = curve(run_scene(scene, f"onoff-linear-{tag}-fraction", "-scale", scale, "-quiet", "1"))
+        # (the on/off scheme's fixed steps, -tol 0, for both: the stages compared step by step)
+        fraction = curve(run_scene(scene, f"onoff-linear-{tag}-fraction", "-scale", scale, "-quiet", "1", "-tol", "0"))
         onoff = curve(run_scene(scene, f"onoff-linear-{tag}-onoff", "-scale", scale, "-quiet", "1",
                                 "-phasemodel", "onoff"))
         pf, af, _ = fraction

@@ -132,7 +132,7 @@ def main():
 
     # 3. The 2D scene on the coarse mesh (6 layers) against the 1D at nr 6, same steps.
     circ = run_scene("sleeve-circular", "sleeve-radial-circular-coarse", "-mesh", "meshes/sleeve-coarse.msh",
-                     "-quiet", "1", "-vtkevery", "0")
+                     "-quiet", "1", "-vtkevery", "0", "-steps", "1500")
     circ_history = os.path.join(circ, "history.csv")
     one_d = radial("nr6-1500", "-nr", "6", "-steps", "1500")
     figures["invariants"]["6/1500"] = invariants("nr 6, 1500 steps", one_d)

@@ -57,7 +57,8 @@ def dense_move_iterations(trace):
 def traced(scene, name, *args):
     os.environ["SMA_STEP_TRACE"] = "1"
     try:
-        return run_scene_captured(scene, name, "-quiet", "1", *args)
+        # (the fixed steps, -tol 0: the counts are those of the scenes' 1500 steps)
+        return run_scene_captured(scene, name, "-quiet", "1", "-tol", "0", *args)
     finally:
         del os.environ["SMA_STEP_TRACE"]
 

@@ -35,8 +35,13 @@ def run(script, out, *args, allow_failure=False, result="summary.json", env=None
     os.makedirs(out, exist_ok=True)
     # The bench measures the reduced scale (docs/benchmarks.md: its studies were built there).
     scale = ["-scale", "reduced"] if "/sleeve-" in script and "-scale" not in args else []
+    # Its studies refine fixed steps: a sleeve run takes them (-tol 0: the scene's -steps) unless its
+    # args choose the steps (-steps, -dt, -tol; time_steps.py sets the adaptive default's -tol).
+    steps = (["-tol", "0"] if "/sleeve-" in script and not {"-steps", "-dt", "-tol"} & set(map(str, args))
+             else [])
     start = time.perf_counter()
-    proc = subprocess.run([os.path.join(ROOT, "tools", "ff"), script, "-out", out, *scale, *map(str, args)],
+    proc = subprocess.run([os.path.join(ROOT, "tools", "ff"), script, "-out", out, *scale, *steps,
+                           *map(str, args)],
                           cwd=ROOT, capture_output=True, text=True, env=dict(os.environ, **(env or {})))
     wall = time.perf_counter() - start
     if proc.returncode != 0:

@@ -75,8 +75,11 @@ QUICK_ONOFF_LEVELS = [20, 40, 80, 160]
 ORDER_SPREAD = 0.35   # A1
 # The defaults measured against the reference: (name, script, options).
 DEFAULTS = [
-    ("sleeve-radial (default: nr 160, 1000 steps)", "edp/scenes/sleeve-radial.edp", []),
-    ("sleeve-circular (default mesh, 1500 steps)", "edp/scenes/sleeve-circular.edp", ["-vtkevery", 0]),
+    ("sleeve-radial (default: nr 160, steps chosen by -tol 1e-3)", "edp/scenes/sleeve-radial.edp", []),
+    ("sleeve-radial (nr 160, 1000 fixed steps: -tol 0)", "edp/scenes/sleeve-radial.edp", ["-tol", 0]),
+    ("sleeve-circular (default mesh, steps chosen by -tol 1e-3)", "edp/scenes/sleeve-circular.edp", ["-vtkevery", 0]),
+    ("sleeve-circular (default mesh, the paper's 1500 fixed steps: -tol 0)", "edp/scenes/sleeve-circular.edp",
+     ["-vtkevery", 0, "-tol", 0]),
     ("sleeve-circular -phasemodel onoff -mesh meshes/sleeve-quarter.msh (the paper's scheme)",
      "edp/scenes/sleeve-circular.edp", ["-phasemodel", "onoff", "-mesh", "meshes/sleeve-quarter.msh",
                                          "-vtkevery", 0]),

@@ -15,8 +15,11 @@ PAPER_STEPS_PER_ELEMENT = STEPS_PER_ELEMENT * PAPER_TEND / TEND
 PAPER_FRACTION_LEVELS = [20, 40, 80, 160, 320, 640]
 QUICK_PAPER_FRACTION_LEVELS = [20, 40, 80, 160]
 PAPER_DEFAULTS = [
-    ("sleeve-radial (default: nr 160, 1000 steps over 150 s)", "edp/scenes/sleeve-radial.edp", []),
-    ("sleeve-circular (default mesh, 1500 steps over 150 s)", "edp/scenes/sleeve-circular.edp", ["-vtkevery", 0]),
+    ("sleeve-radial (default: nr 160, steps chosen by -tol 1e-3)", "edp/scenes/sleeve-radial.edp", []),
+    ("sleeve-radial (nr 160, 1000 fixed steps over 150 s: -tol 0)", "edp/scenes/sleeve-radial.edp", ["-tol", 0]),
+    ("sleeve-circular (default mesh, steps chosen by -tol 1e-3)", "edp/scenes/sleeve-circular.edp", ["-vtkevery", 0]),
+    ("sleeve-circular (default mesh, the paper's 1500 fixed steps: -tol 0)", "edp/scenes/sleeve-circular.edp",
+     ["-vtkevery", 0, "-tol", 0]),
 ]
 
 def main_paper(opts):

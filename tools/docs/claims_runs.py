@@ -1,4 +1,5 @@
-"""The runs of the claims table (tools/docs/claims.py) besides the figure scenes at their defaults:
+"""The runs of the claims table (tools/docs/claims.py) besides the figure scenes at their defaults (all
+at the paper's 1500 fixed increments, -tol 0, unless a run gives its steps):
 each figure scene with the paper's on/off scheme (its quarter mesh), each with the paper's algorithm
 replayed (`-algorithm paper`: docs/model.md#the-papers-algorithm-replayed), and the explanation runs
 that change one choice the paper leaves open. Results in results/claims/<name>/.
@@ -16,6 +17,7 @@ sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__)))) 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import results_io  # noqa: E402
 from paper_scale_metrics import curve, reversion_start  # noqa: E402
+from paper_scale_runs import paper_increments  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 RESULTS = os.path.join(ROOT, "results")
@@ -80,7 +82,7 @@ def run_all():
         cmd = [os.path.join(ROOT, "tools", "ff"), f"edp/scenes/{scene}.edp", "-quiet", "1", "-out", out]
         if "-vtkevery" not in options:
             cmd += ["-vtkevery", "0"]
-        cmd += options
+        cmd += paper_increments(options)
         with open(log, "w") as f:
             rc = subprocess.run(cmd, cwd=ROOT, stdout=f, stderr=subprocess.STDOUT).returncode
         if rc != 0 or not os.path.exists(os.path.join(out, "summary.json")):

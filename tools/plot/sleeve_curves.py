@@ -128,12 +128,15 @@ def point_labels(summary, names):
 
 # ---- Force against temperature and time ----
 
-def zoom_end(summary, t_end):
+def zoom_end(summary, history, t_end):
     """The end of the time panels' zoom on the transient: a quarter past the time from which the
-    ring is austenite for good (summary.json austenite_step x dt), or the whole run."""
-    dt = summary["parameters"]["dt"]
+    ring is austenite for good (history.csv's t at summary.json's austenite_step: steps of any
+    length, chosen by -tol or fixed) and five of that step's lengths, or the whole run."""
     austenite = summary["austenite_step"]
-    return min(t_end, austenite * dt * 1.25 + 5 * dt) if austenite is not None else t_end
+    if austenite is None:
+        return t_end
+    t, dt = history["t"][austenite - 1], history["dt"][austenite - 1]
+    return min(t_end, t * 1.25 + 5 * dt)
 
 
 def force_panels(fig, curves, summary, history, t_state, T_state, xlabel, title):
@@ -144,7 +147,7 @@ def force_panels(fig, curves, summary, history, t_state, T_state, xlabel, title)
     spans = phase_spans(summary, history)
     groups = coincident_groups({k: (c[0], c[1]) for k, c in curves.items()})
     t_end = t_state[-1]
-    t_zoom = zoom_end(summary, t_end)
+    t_zoom = zoom_end(summary, history, t_end)
     if t_zoom < t_end:
         left, right, whole = fig.subplots(1, 3, gridspec_kw={"width_ratios": [1, 1, 0.4]})
     else:

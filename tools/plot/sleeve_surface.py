@@ -63,7 +63,7 @@ def displacement_states(outdir, summary):
         return [(0.0, f, f[len("fields-"):-len(".vtu")]) for f in sorted(instants)]
     import xml.etree.ElementTree as ET
     listed = [(float(d.get("timestep")), d.get("file")) for d in ET.parse(pvd).getroot().iter("DataSet")]
-    t_zoom = zoom_end(summary, max(t for t, _ in listed))
+    t_zoom = zoom_end(summary, read_csv(os.path.join(outdir, "history.csv")), max(t for t, _ in listed))
     return [(t, f, f[len("fields-"):-len(".vtu")] if f in instants else "") for t, f in listed
             if f in instants or t <= t_zoom]
 
@@ -230,7 +230,7 @@ def displacement(outdir, summary):
             right.plot(*gaps[member], lw=1.2, ls=("-", "--", ":")[j % 3], color=colours[k % len(colours)],
                        label=label if j == 0 else "_member")
     right.axhline(0, color="k", lw=0.8)
-    t_zoom = zoom_end(summary, p["t"][-1])
+    t_zoom = zoom_end(summary, h, p["t"][-1])
     # Once every point touches for good the gaps are zero to the end: the axis stops a little
     # after the last opening (an empty panel after 1 s said nothing), and the title says so.
     widest = max(max(p[f"gap_{n}_m"]) for n in names)
