@@ -137,10 +137,10 @@ def sleeve_circular():
     ro = ri + float(geometry["Hr"])
     full = 2 * s["dissipation"] * math.pi / 4 * (ro * ro - ri * ri)
     check(s["step_solver"] == "newton" and s["step_fallbacks"] == 0 and s["unconverged_steps"] == 0
-          and 0.99 * full < s["heat_dissipated"] <= full,
+          and 0.99 * full < s["heat_dissipated"] <= full * (1 + 1e-9),
           f"sleeve-circular -dissipation 1e5: newton, converged, no fall-back; dissipated {s['heat_dissipated']:.6g} J/m, "
-          f"2 k x the quarter ring's area {full:.6g} ({s['heat_dissipated'] / full - 1:+.2e}: the polygonal mesh, "
-          f"and points not fully through)")
+          f"2 k x the quarter ring's area {full:.6g} ({s['heat_dissipated'] / full - 1:+.2e}: the heat is on the "
+          f"ring's true annulus, -curvedmeasure 1; below it where points are not fully through)")
     return {"heat_dissipated_J_per_m": s["heat_dissipated"], "full_cycle_J_per_m": full}
 
 
