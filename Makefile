@@ -329,7 +329,7 @@ help:
 # (the sleeve scenes at the paper's 1500 fixed increments, -tol 0: the claims are judged on them)
 figures: test
 	@for scene in $(FIGURE_SCENES); do \
-	  case $$scene in sleeve-*) args='-quiet 1 -tol 0' ;; *) args='-quiet 1' ;; esac; \
+	  case $$scene in sleeve-*) args="-quiet 1 -tol 0 -out results/$$scene" ;; *) args='-quiet 1' ;; esac; \
 	  $(MAKE) --no-print-directory run SCENE=$$scene ARGS="$$args" || exit 1; done
 	@$(PYTHON) tools/docs/claims.py --run
 	@$(PYTHON) tools/docs/figures.py
