@@ -20,6 +20,8 @@ PAPER_DEFAULTS = [
     ("sleeve-circular (default mesh, steps chosen by -tol 1e-3)", "edp/scenes/sleeve-circular.edp", ["-vtkevery", 0]),
     ("sleeve-circular (default mesh, the paper's 1500 fixed steps: -tol 0)", "edp/scenes/sleeve-circular.edp",
      ["-vtkevery", 0, "-tol", 0]),
+    ("sleeve-circular (108 layers x 18 arc segments, -tol 3e-4)", "edp/scenes/sleeve-circular.edp",
+     ["-vtkevery", 0, "-mesh", "meshes/sleeve-aniso108.msh", "-tol", 3e-4]),
 ]
 
 def main_paper(opts):
