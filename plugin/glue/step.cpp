@@ -70,8 +70,9 @@ Eigen::VectorXd Segment(KN<double>* a, long start, long length, const char* what
 // moves, dense Newton moves]. Returns the iterations.
 // settings[20] (optional) = 1: a step that does not converge leaves chi, u and the table's slip
 // thresholds as they came in (the step's start, for the caller's fall-back: no copies of them).
-// settings[21] (optional): a trial's budget of products (StepSettings::product_budget; 0: none);
-// stats[14] (when stats has 15 entries) = 1 when the step stopped on it.
+// settings[21] (optional): a trial's budget of products (StepSettings::product_budget; 0: not a
+// trial); stats[14] (when stats has 15 entries) = 1 when the trial gave up (on the budget, on
+// stalled negative-curvature moves or on the stall rule: StepResult::trial_given_up).
 long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM<double>* const& table,
                        KN<double>* const& contact, KN<double>* const& chi, KN<double>* const& T,
                        KN<double>* const& u, KN<double>* const& stats) {

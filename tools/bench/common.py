@@ -13,6 +13,7 @@ TOOLS = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # and the independent oracles the sections measure against (tools/bench/oracles).
 sys.path[:0] = [TOOLS, os.path.join(TOOLS, "bench", "oracles")]
 from results_io import read_csv  # noqa: E402,F401  (the sections' CSV reader: a damaged file named)
+from scene_steps import fixed_steps  # noqa: E402
 from sma.plotting import save as save_png  # noqa: E402
 
 ROOT = os.path.dirname(TOOLS)
@@ -37,8 +38,7 @@ def run(script, out, *args, allow_failure=False, result="summary.json", env=None
     scale = ["-scale", "reduced"] if "/sleeve-" in script and "-scale" not in args else []
     # Its studies refine fixed steps: a sleeve run takes them (-tol 0: the scene's -steps) unless its
     # args choose the steps (-steps, -dt, -tol; time_steps.py sets the adaptive default's -tol).
-    steps = (["-tol", "0"] if "/sleeve-" in script and not {"-steps", "-dt", "-tol"} & set(map(str, args))
-             else [])
+    steps = fixed_steps(args) if "/sleeve-" in script else []
     start = time.perf_counter()
     proc = subprocess.run([os.path.join(ROOT, "tools", "ff"), script, "-out", out, *scale, *steps,
                            *map(str, args)],

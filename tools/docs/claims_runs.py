@@ -17,7 +17,7 @@ sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__)))) 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import results_io  # noqa: E402
 from paper_scale_metrics import curve, reversion_start  # noqa: E402
-from paper_scale_runs import paper_increments  # noqa: E402
+from scene_steps import fixed_steps  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 RESULTS = os.path.join(ROOT, "results")
@@ -82,7 +82,7 @@ def run_all():
         cmd = [os.path.join(ROOT, "tools", "ff"), f"edp/scenes/{scene}.edp", "-quiet", "1", "-out", out]
         if "-vtkevery" not in options:
             cmd += ["-vtkevery", "0"]
-        cmd += paper_increments(options)
+        cmd += list(options) + fixed_steps(options)
         with open(log, "w") as f:
             rc = subprocess.run(cmd, cwd=ROOT, stdout=f, stderr=subprocess.STDOUT).returncode
         if rc != 0 or not os.path.exists(os.path.join(out, "summary.json")):

@@ -8,6 +8,9 @@ import sys
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+from scene_steps import fixed_steps  # noqa: E402
+
 INTERF = 0.0005            # the paper's interference: pipe 5.05 cm, ring 5 cm
 OFFSET = 0.0005            # the paper's 0.05 cm: its offset equals its interference
 ELLIPSE = ["-Ri", "0.05", "-pipeA", "0.0504", "-pipeB", "0.0505"]   # paper 4.4.1: 5.04 (x) x 5.05 (y)
@@ -33,12 +36,6 @@ def gvar_opts(o):
     return o
 FALLBACK = ["-stepsolver", "fixedpoint"]
 
-
-def paper_increments(options):
-    """options, with -tol 0 (fixed steps: the scene's -steps, the paper's 1500 increments) unless
-    they choose the steps themselves (-steps, -dt, -tol): the paper's figures are compared at its
-    increments, where the scenes' default chooses its steps by their error."""
-    return list(options) if {"-steps", "-dt", "-tol"} & set(options) else list(options) + ["-tol", "0"]
 VTK = ["-vtkevery", "2"]    # frames every 2 steps: where the reversion starts
 
 RUNLOG = []                 # (name, scene, options, status, seconds, log)
@@ -74,7 +71,7 @@ def run(work, name, scene, opts, fallback=None):
         cmd = ["tools/ff", "edp/scenes/%s.edp" % scene, "-quiet", "1", "-out", out]
         if "-vtkevery" not in o:
             cmd += ["-vtkevery", "0"]
-        cmd += paper_increments(o)
+        cmd += list(o) + fixed_steps(o)  # (the paper's figures at its 1500 increments)
         subprocess.run(["rm", "-rf", out])
         t0 = time.time()
         with open(log, "w") as f:
