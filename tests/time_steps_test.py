@@ -15,6 +15,8 @@ it over the run):
     Lame's; the error measured is below 3 tol over the transient;
   - a fixed-step run's t is n dt and its dt column dt, to the last bit;
   - an adaptive run stopped by -stopafter and resumed from its checkpoint equals the whole run.
+sleeve-circular-gvar (g switching where the ring touches) at -tol 1e-3, against its 15000 fixed
+steps: the effectivity within [0.5, 2], the switched condition's part of the estimate > 0.
 sleeve-elliptic-friction at -steps 100 (the step the nested loops could not solve, step 39 of
 100: a slip-threshold fixed point at its limit) is solved in halves: exit 0, steps_retried >= 1,
 step_splits >= 1, every node inside the Coulomb cone at the end.
@@ -88,6 +90,20 @@ def main():
             step = s["parameters"]["dt"]
             check(all(float(r["t"]) == int(r["step"]) * step and float(r["dt"]) == step for r in history),
                   f"{name}: every row's t = step x dt ({step}) and dt = {step}, bit for bit")
+    # A heat condition that switches inside steps (g 2000 where the ring touches, 500 elsewhere): its
+    # lag is in the estimate (without its part the effectivity was 0.35).
+    ref, proc_ref = run("sleeve-circular-gvar", "gvar-ref", "-steps", "15000", "-vtkevery", "0")
+    out, proc = run("sleeve-circular-gvar", "gvar", "-tol", "1e-3", "-vtkevery", "0")
+    check(proc.returncode == 0 == proc_ref.returncode,
+          f"sleeve-circular-gvar -tol 1e-3 exit {proc.returncode}, -steps 15000 exit {proc_ref.returncode}")
+    if proc.returncode == 0 == proc_ref.returncode:
+        s, e = summary_of(out), curve_error(os.path.join(out, "history.csv"), os.path.join(ref, "history.csv"))
+        eff = s["time_error_estimate"] / e["l1"]
+        data["gvar_tol1e-3"] = {"steps": s["n_steps"], "l1": e["l1"], "estimate": s["time_error_estimate"],
+                                "estimate_condition": s["time_error_estimate_condition"], "effectivity": eff}
+        check(s["time_error_estimate_condition"] > 0 and 0.5 <= eff <= 2,
+              f"sleeve-circular-gvar -tol 1e-3: estimate {s['time_error_estimate']:.3e} (the switched condition's "
+              f"part {s['time_error_estimate_condition']:.2e}) over the measured {e['l1']:.3e} = {eff:.2f}, in [0.5, 2]")
     # An adaptive run stopped and resumed equals the whole one.
     adaptive = ["-tol", "1e-3", "-checkpoint", "10"]
     whole, p1 = run("sleeve-radial", "whole", *adaptive)
