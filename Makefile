@@ -65,7 +65,7 @@ BEAM_MESHES := meshes/beam-coarse.msh meshes/beam-medium.msh meshes/beam-fine.ms
 RING_MESHES := meshes/ring-coarse.msh meshes/ring-l1.msh meshes/ring-l2.msh meshes/ring-l3.msh meshes/ring-l4.msh
 SLEEVE_MESHES := meshes/sleeve-coarse.msh meshes/sleeve-quarter.msh meshes/sleeve-aniso.msh \
                  meshes/sleeve-half-coarse.msh meshes/sleeve-half.msh meshes/sleeve-nr9.msh meshes/sleeve-nr12.msh \
-                 meshes/sleeve-nr36.msh meshes/sleeve-aniso108.msh
+                 meshes/sleeve-nr36.msh meshes/sleeve-aniso36.msh meshes/sleeve-aniso108.msh
 # Quarter rings with nearly degenerate triangles (docs/stability.md, case 6).
 SLIVER_MESHES := meshes/sliver-thin.msh meshes/sliver-degenerate.msh
 # Pipe mesh files for the 2D scenes' -pipemesh (meshes/pipe.geo; by default the scenes make a pipe
@@ -97,10 +97,10 @@ sleeve_opt_half := $(sleeve_opt_quarter) -setnumber half 1
 # The refinement levels of the quarter ring (nr 6 and 18 are sleeve-coarse, sleeve-quarter; 9 and
 # 12 are used by tests/sleeve_convergence_test.py, 36 by tests/step_solver_test.py (1 s steps: 1440
 # points transform at once) and the benchmarks, 27 by the benchmarks only; -aniso36 is
-# sleeve-aniso with twice its layers). nr 72, 108 and 140 (26k, 59k and 99k nodes) extend the
+# sleeve-aniso with twice its layers, for tests/moving_layers_test.py). nr 72, 108 and 140 (26k, 59k and 99k nodes) extend the
 # scaling series of the benchmarks (tools/bench/scaling.py: 18, 36, 72, 108, 140 layers); made by
 # make bench only.
-BENCH_MESHES := meshes/sleeve-nr27.msh meshes/sleeve-aniso36.msh \
+BENCH_MESHES := meshes/sleeve-nr27.msh \
                 meshes/sleeve-nr72.msh meshes/sleeve-nr108.msh meshes/sleeve-nr140.msh
 # Meshes written in millimetres, with a $$MeshUnit section saying so (docs/parameters.md, Mesh
 # units): in metres the triangles of nr 108 and 140 fall below gmshload's floor of 1e-8 (area, in

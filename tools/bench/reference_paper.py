@@ -22,6 +22,10 @@ PAPER_DEFAULTS = [
      ["-vtkevery", 0, "-tol", 0]),
     ("sleeve-circular (108 layers x 18 arc segments, -tol 3e-4)", "edp/scenes/sleeve-circular.edp",
      ["-vtkevery", 0, "-mesh", "meshes/sleeve-aniso108.msh", "-tol", 3e-4]),
+    ("sleeve-circular (36 layers x 18 arc segments, -tol 3e-4)", "edp/scenes/sleeve-circular.edp",
+     ["-vtkevery", 0, "-mesh", "meshes/sleeve-aniso36.msh", "-tol", 3e-4]),
+    ("sleeve-circular (36 moving layers x 18 arc segments, -tol 3e-4: -movinglayers 1)", "edp/scenes/sleeve-circular.edp",
+     ["-vtkevery", 0, "-mesh", "meshes/sleeve-aniso36.msh", "-tol", 3e-4, "-movinglayers", 1]),
 ]
 
 def main_paper(opts):
