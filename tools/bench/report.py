@@ -41,7 +41,9 @@ def write_doc(r, plt):
     w("Time steps chosen by the error (`-tol`) against fixed steps, at the paper's scale, in the same run: "
       "[benchmarks/time-steps.md](benchmarks/time-steps.md).")
     w("")
-    w("The ring mesh, layers and arc apart: [benchmarks/mesh-refinement.md](benchmarks/mesh-refinement.md).")
+    w("The ring mesh, layers and arc apart: [benchmarks/mesh-refinement.md](benchmarks/mesh-refinement.md); the "
+      "elliptic scenes' own refinement study (orders 1.2-1.5, the layers' error): "
+      "[benchmarks/elliptic-mesh-refinement.md](benchmarks/elliptic-mesh-refinement.md).")
     w("")
     w("## Goals")
     w("")
