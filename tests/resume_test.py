@@ -4,7 +4,9 @@
 For sleeve-circular and sleeve-elliptic-friction (coarse mesh: the friction scene covers the
 contact warm start, the slip thresholds and the slip history), sleeve-radial and a variant whose
 heat-condition hook depends on time (tests/hooks/heat-ramp.edp, docs/hooks.md), 300 steps,
-a checkpoint every 50:
+a checkpoint every 50 (and sleeve-circular with moving layers, -movinglayers 1, whose layers
+move after steps 116-137: a checkpoint every 10, stopped after 125, so that the checkpoint of
+step 120 holds a moved mesh and the resumed run moves it again):
   - A: the uninterrupted run with -checkpoint 50; its outputs equal, byte for byte, those of the
     same run without -checkpoint (writing checkpoints changes nothing) and it leaves no
     checkpoint.txt behind (a finished run has nothing to resume);
@@ -31,15 +33,19 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from checklib import ROOT, check, finish, record  # noqa: E402
 from checklib import files_under as files  # noqa: E402
 
-CASES = [("sleeve-circular", ["-mesh", "meshes/sleeve-coarse.msh"]),
-         ("sleeve-elliptic-friction", ["-mesh", "meshes/sleeve-coarse.msh"]),
-         ("sleeve-radial", []),
+# (scene, options, checkpoint every, stopped after): resumed from the last checkpoint before the stop
+CASES = [("sleeve-circular", ["-mesh", "meshes/sleeve-coarse.msh"], 50, 130),
+         ("sleeve-elliptic-friction", ["-mesh", "meshes/sleeve-coarse.msh"], 50, 130),
+         ("sleeve-radial", [], 50, 130),
          # a variant's hook that depends on time through sleeveTime (docs/hooks.md, rule 3)
-         ("tests/hooks/heat-ramp.edp", [])]
+         ("tests/hooks/heat-ramp.edp", [], 50, 130),
+         # the moving layers' mesh, moved before the checkpoint and after it
+         ("sleeve-circular", ["-movinglayers", "1"], 10, 125)]
 COMMON = ["-steps", "300", "-quiet", "1"]
 TIMING = ("wall_seconds", "resumed_from_step", "backsolve_floor_seconds_per_step", "loop_over_floor",
           "stiffness_backsolve_seconds", "heat_backsolve_seconds", "backsolves_needed_seconds",
-          "loop_over_backsolves_needed", "loop_over_backsolves_needed_transient", "loop_over_backsolves_needed_tail")
+          "loop_over_backsolves_needed", "loop_over_backsolves_needed_transient", "loop_over_backsolves_needed_tail",
+          "layer_move_seconds")
 
 
 def run(scene, out, *extra):
@@ -71,12 +77,15 @@ def same_files(a, b, skip=("summary.json",)):
 def main():
     measured, temperatures = [], {}
     with tempfile.TemporaryDirectory(prefix="resume-") as tmp:
-        for scene, options in CASES:
-            plain, full, stopped = (os.path.join(tmp, f"{os.path.basename(scene)}-{k}") for k in ("plain", "A", "B"))
+        for case, (scene, options, every, stop) in enumerate(CASES):
+            name = os.path.basename(scene) + ("" if case == 0 or scene != CASES[0][0] else f"-{case}")
+            label = f"{scene} {' '.join(options)}".strip()
+            at = stop - stop % every  # the checkpoint the resumed run starts from
+            plain, full, stopped = (os.path.join(tmp, f"{name}-{k}") for k in ("plain", "A", "B"))
             r0 = run(scene, plain, *options)
-            ra = run(scene, full, *options, "-checkpoint", "50")
+            ra = run(scene, full, *options, "-checkpoint", str(every))
             check(r0.returncode == 0 and ra.returncode == 0,
-                  f"{scene}: the runs without and with -checkpoint 50 finish (exit {r0.returncode}, {ra.returncode})"
+                  f"{label}: the runs without and with -checkpoint {every} finish (exit {r0.returncode}, {ra.returncode})"
                   + ("" if r0.returncode == ra.returncode == 0 else (r0.stdout + ra.stdout)[-400:]))
             differ, count = same_files(plain, full, skip=())
             differ = [d for d in differ if d != "summary.json"]
@@ -85,24 +94,31 @@ def main():
                 for key in TIMING:
                     s.pop(key, None)
             check(not differ and sa == s0 and not os.path.exists(os.path.join(full, "checkpoint.txt")),
-                  f"{scene}: writing checkpoints changes none of the {count} output files "
+                  f"{label}: writing checkpoints changes none of the {count} output files "
                   f"(differ: {differ}; summary {'equal' if sa == s0 else 'DIFFERS'}) and the finished run "
                   "leaves no checkpoint.txt")
 
-            rb = run(scene, stopped, *options, "-checkpoint", "50", "-stopafter", "130")
+            rb = run(scene, stopped, *options, "-checkpoint", str(every), "-stopafter", str(stop))
             checkpoint = os.path.join(stopped, "checkpoint.txt")
             text = open(checkpoint).read() if os.path.exists(checkpoint) else ""
             rows = sum(1 for _ in open(os.path.join(stopped, "history.csv.partial"))) - 1 \
                 if os.path.exists(os.path.join(stopped, "history.csv.partial")) else -1
-            check(rb.returncode == 4 and "\nstep 100\n" in text and rows == 130
+            check(rb.returncode == 4 and f"\nstep {at}\n" in text and rows == stop
                   and not os.path.exists(os.path.join(stopped, "summary.json")),
-                  f"{scene}: -stopafter 130 exits 4 (got {rb.returncode}) leaving the checkpoint of step 100 "
-                  f"({'found' if 'step 100' in text else 'MISSING'}), {rows} history rows (130: 30 to cut), "
-                  "no summary.json")
+                  f"{label}: -stopafter {stop} exits 4 (got {rb.returncode}) leaving the checkpoint of step {at} "
+                  f"({'found' if f'step {at}' in text else 'MISSING'}), {rows} history rows ({stop}: {stop - at} "
+                  "to cut), no summary.json")
+            if "-movinglayers" in options:
+                # (the case tests the moved mesh only if the layers moved before the checkpoint and after)
+                with open(os.path.join(full, "mesh-moves.csv")) as f:
+                    moves = [int(line.split(",")[0]) for line in list(f)[1:]]
+                check(any(m <= at for m in moves) and any(m > at for m in moves) and "\nlayersR " in text,
+                      f"{label}: the layers moved before the checkpoint of step {at} and after it (after steps "
+                      f"{moves}), and the checkpoint holds their radii")
             with open(os.path.join(stopped, "checkpoint.txt.partial"), "w") as f:
                 f.write("sma-sleeve-checkpoint 1\nscene half-writ")  # a kill during the next write
-            rr = run(scene, stopped, *options, "-checkpoint", "50", "-resume", "1")
-            check(rr.returncode == 0, f"{scene}: -resume 1 finishes (exit {rr.returncode})"
+            rr = run(scene, stopped, *options, "-checkpoint", str(every), "-resume", "1")
+            check(rr.returncode == 0, f"{label}: -resume 1 finishes (exit {rr.returncode})"
                   + ("" if rr.returncode == 0 else " " + (rr.stdout + rr.stderr)[-400:]))
             differ, count = same_files(full, stopped)
             sb = json.load(open(os.path.join(stopped, "summary.json")))
@@ -111,26 +127,26 @@ def main():
             for s in (sa, sb):
                 for k in TIMING:
                     s.pop(k, None)
-            check(not differ and sa == sb and resumed_from == 100,
-                  f"{scene}: the resumed run's {count} files equal the uninterrupted run's byte for byte "
+            check(not differ and sa == sb and resumed_from == at,
+                  f"{label}: the resumed run's {count} files equal the uninterrupted run's byte for byte "
                   f"(differ: {differ}), its summary.json too but for the timing "
-                  f"({'equal' if sa == sb else 'DIFFERS'}), resumed_from_step {resumed_from} (100)")
+                  f"({'equal' if sa == sb else 'DIFFERS'}), resumed_from_step {resumed_from} ({at})")
             with open(os.path.join(full, "history.csv")) as f:
                 lines = [line.split(",") for line in f]
                 column = lines[0].index("T_inner_mean")
-                temperatures[scene] = [words[column] for words in lines[1:]]
-            measured.append({"scene": scene, "files": count, "differ": differ, "summary_equal": sa == sb,
+                temperatures[label] = [words[column] for words in lines[1:]]
+            measured.append({"scene": label, "checkpoint_every": every, "stopped_after": stop, "files": count, "differ": differ, "summary_equal": sa == sb,
                              "resumed_from_step": resumed_from, "rows_at_stop": rows})
             for folder in (plain, full, stopped):
                 shutil.rmtree(folder, ignore_errors=True)
     # The hook acted: its air temperature, swinging with sleeveTime, moved the inner temperature
     # away from sleeve-circular's on the same mesh (a hook that saw sleeveTime = 0 would not).
-    ramp, base = temperatures.get("tests/hooks/heat-ramp.edp", []), temperatures.get("sleeve-circular", [])
+    ramp = temperatures.get("tests/hooks/heat-ramp.edp", [])
+    base = temperatures.get("sleeve-circular -mesh meshes/sleeve-coarse.msh", [])
     differing = sum(1 for a, b in zip(ramp, base) if a != b)
     check(len(ramp) == len(base) == 300 and differing > 200,
           f"the time-dependent hook changes the inner temperature at {differing} of {len(ramp)} steps")
-    record("resume", {"test": "resume", "steps": 300, "checkpoint_every": 50, "stopped_after": 130,
-                      "runs": measured})
+    record("resume", {"test": "resume", "steps": 300, "runs": measured})
     finish()
 
 
