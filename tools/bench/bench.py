@@ -29,6 +29,9 @@ summary.json with the headline figures) and docs/benchmarks.md with its PNGs in 
      written again in vectorised numpy)                                           against_numpy.py
   9. time steps chosen by the error (-tol) against fixed steps at the paper's scale: steps, loop
      time, the time error and each run's own estimate (docs/benchmarks/time-steps.md) time_steps.py
+ 10. moving layers against fixed meshes at the paper's scale, against p*: error over the reversion
+     window, whole-process time, orders in the layers (docs/benchmarks/mesh-adaptation.md)
+                                                                               mesh_adaptation.py
 The oracles (tools/bench/oracles: closed forms, the curve metric, the scheme in numpy, GetFEM) are
 independent of the code they check: they import nothing of python/sma.
 """
@@ -41,6 +44,7 @@ import time
 import against_numpy
 import default_run
 import kernels
+import mesh_adaptation
 import psor
 import pullout
 import report
@@ -56,7 +60,8 @@ ALONE = {"kernels": kernels.measure, "psor": psor.measure, "ring-lame": ring_lam
          "scaling": lambda results: results.update(scaling=scaling.scaling(OUT, QUICK)),
          "pullout": lambda results: results.update(pullout=pullout.measure(OUT, QUICK)),
          "numpy": lambda results: results.update(radial_numpy=against_numpy.radial_against_numpy()),
-         "time-steps": lambda results: time_steps.write_doc(time_steps.measure(results))}
+         "time-steps": lambda results: time_steps.write_doc(time_steps.measure(results)),
+         "mesh-adaptation": lambda results: mesh_adaptation.write_doc(mesh_adaptation.measure(results, quick=QUICK))}
 
 
 def main():
@@ -93,6 +98,7 @@ def main():
     results["pullout"] = pullout.measure(OUT, QUICK)
     results["radial_numpy"] = against_numpy.radial_against_numpy()
     time_steps.write_doc(time_steps.measure(results))
+    mesh_adaptation.write_doc(mesh_adaptation.measure(results, quick=QUICK), plt)
 
     results["bench_wall_seconds"] = time.perf_counter() - bench_start
     with open(os.path.join(OUT, "summary.json.partial"), "w") as f:

@@ -6,6 +6,7 @@ import os
 import against_numpy
 import default_run
 import kernels
+import mesh_adaptation
 import psor
 import pullout
 import ring_lame
@@ -43,7 +44,8 @@ def write_doc(r, plt):
     w("")
     w("The ring mesh, layers and arc apart: [benchmarks/mesh-refinement.md](benchmarks/mesh-refinement.md); the "
       "elliptic scenes' own refinement study (orders 1.2-1.5, the layers' error): "
-      "[benchmarks/elliptic-mesh-refinement.md](benchmarks/elliptic-mesh-refinement.md).")
+      "[benchmarks/elliptic-mesh-refinement.md](benchmarks/elliptic-mesh-refinement.md). Moving layers against "
+      "fixed meshes at the paper's scale, in the same run: [benchmarks/mesh-adaptation.md](benchmarks/mesh-adaptation.md).")
     w("")
     w("## Goals")
     w("")
@@ -119,6 +121,9 @@ def write_doc(r, plt):
          and itf["dc"] <= 4 and itf["psor"] <= 10)
     for text, value, ok in scaling.goals(r["scaling"]):
         goal(text, value, ok)
+    if "mesh_adaptation" in r:
+        for text, value, ok in mesh_adaptation.goal_rows(r["mesh_adaptation"]):
+            goal(text, value, ok == "yes")
     w("")
     w("## Reading the numbers")
     w("")
