@@ -2,7 +2,8 @@
 """Every entry point ends on a signal, its children with it, says so, and publishes nothing.
 
 Each entry point (make run, make sweep, make ensemble, tools/ff, sma.run and sma.sweep from a
-Python script) starts a long run (sleeve-circular, 100000 steps) as the leader of its own session
+Python script; and tools/ff with -meshestimate 1, signalled while the scene's own child, its
+mesh-error companion, runs) starts a long run (sleeve-circular, 100000 steps) as the leader of its own session
 and process group, as a shell starts a command. Once a FreeFEM process of that session runs it is
 sent, in turn:
   - TERM to the leader alone (a job manager's `kill`, a closed batch job): the leader must pass it on;
@@ -56,6 +57,10 @@ def entry_points(tmp):
                                                 "ARGS=-steps 100000", "OUT={out}"]),
             ("tools/ff", "ff", [os.path.join(ROOT, "tools", "ff"), "edp/scenes/sleeve-circular.edp", *LONG,
                                 "-out", "{out}"]),
+            # the signal arrives while the run's own child, its mesh-error companion, runs
+            ("tools/ff -meshestimate 1", "ff-meshestimate",
+             [os.path.join(ROOT, "tools", "ff"), "edp/scenes/sleeve-circular.edp", "-steps", "20000", "-quiet", "1",
+              "-meshestimate", "1", "-out", "{out}"]),
             ("sma.run", "sma-run", [PYTHON, "-c", sma + "sma.run('sleeve-circular', {out!r}, steps=100000, quiet=1)"]),
             ("sma.sweep", "sma-sweep", [PYTHON, "-c", sma + "sma.sweep('sleeve-circular', {{'g': [400, 500]}}, "
                                         "fixed={{'steps': 100000, 'quiet': 1}}, out={out!r})"])):
@@ -71,16 +76,17 @@ def published(out):
     return found
 
 
-def stop(name, argv, out, how):
-    """Starts argv in its own session, signals it as `how` says once FreeFEM runs; returns the
-    measured facts."""
+def stop(name, argv, out, how, processes=1):
+    """Starts argv in its own session, signals it as `how` says once `processes` FreeFEM processes
+    run (2: a scene and its child); "INT to FreeFEM alone" goes to the first (the scene); returns
+    the measured facts."""
     leader = subprocess.Popen(argv, cwd=ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
                               start_new_session=True)
     deadline = time.time() + 120
     freefem = []
     while time.time() < deadline and leader.poll() is None:
-        freefem = [p for p, n in session_processes(leader.pid).items() if n.startswith("FreeFem++")]
-        if freefem:
+        freefem = sorted(p for p, n in session_processes(leader.pid).items() if n.startswith("FreeFem++"))
+        if len(freefem) >= processes:
             break
         time.sleep(0.1)
     time.sleep(0.5)  # FreeFEM past its start, into the run
@@ -88,9 +94,8 @@ def stop(name, argv, out, how):
         os.kill(leader.pid, signal.SIGTERM)
     elif how == "INT to the group":
         os.killpg(leader.pid, signal.SIGINT)
-    else:  # INT to FreeFEM alone
-        for pid in freefem:
-            os.kill(pid, signal.SIGINT)
+    else:  # INT to FreeFEM alone (the scene, the oldest: not its child)
+        os.kill(freefem[0], signal.SIGINT)
     try:
         _, err = leader.communicate(timeout=60)
         ended = True
@@ -130,10 +135,12 @@ def main():
         if only and name not in only:
             continue
         ways = ["TERM to the leader", "INT to the group"] + (["INT to FreeFEM alone"] if name == "tools/ff" else [])
+        if name == "tools/ff -meshestimate 1":
+            ways = ["TERM to the leader", "INT to FreeFEM alone"]
         for how in ways:
             out = os.path.join(tmp, f"{folder}-{how.split()[0].lower()}-{how.split()[-1]}")
             words = [w.format(out=out) for w in argv]
-            m = stop(name, words, out, how)
+            m = stop(name, words, out, how, 2 if "-meshestimate" in name else 1)
             measured[f"{name}: {how}"] = m
             check(m["freefem_started"] and m["ended"] and m["exit"] not in (0, None) and not m["left"]
                   and m["said"] and not m["published"],

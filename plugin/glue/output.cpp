@@ -8,6 +8,7 @@
 #include "core/json.hpp"
 #include "core/mesh_check.hpp"
 #include "core/output.hpp"
+#include "core/process.hpp"
 
 namespace sma_glue {
 namespace {
@@ -259,6 +260,7 @@ long ProbeRowWrite(std::ostream* const& f, KN<double>* const& head, KN<double>* 
 
 string* JsonQuote(Stack stack, string* const& text) { return NewString(stack, sma::json::quote(*text)); }
 string* ShellQuote(Stack stack, string* const& text) { return NewString(stack, sma::files::shell_quote(*text)); }
+long RunCommand(string* const& command) { return sma::process::run_shell(*command); }
 
 }  // namespace
 
@@ -294,6 +296,7 @@ void AddOutputFunctions() {
   Global.Add("JsonQuote", "(", new OneOperator1s_<S, S>(JsonQuote));
   Global.Add("MeshFileError", "(", new OneOperator2s_<S, S, double>(MeshFileError));
   Global.Add("ShellQuote", "(", new OneOperator1s_<S, S>(ShellQuote));
+  Global.Add("RunCommand", "(", new OneOperator1_<long, S>(RunCommand));
 }
 
 }  // namespace sma_glue

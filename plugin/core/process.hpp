@@ -1,0 +1,36 @@
+// A child process run from a script, the caller keeping its own signal dispositions.
+//
+// FreeFEM's exec() is the C library's system(), which ignores SIGINT and SIGQUIT in the caller
+// while the child runs: an INT sent to the scene's process alone (as a user stops a FreeFEM run)
+// was discarded, the child finished and the scene went on to publish its results. run_shell waits
+// for the child without touching the caller's signals: an INT or TERM stops the caller as it would
+// anywhere else (a child that must not outlive it asks for its parent's death signal itself:
+// setpriv --pdeathsig TERM).
+#pragma once
+
+#include <spawn.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+
+#include <cerrno>
+#include <string>
+
+extern char** environ;
+
+namespace sma::process {
+
+// Runs `command` with /bin/sh -c and waits for it: its exit status, 128 + the signal that ended it,
+// or -1 when it could not be started.
+inline int run_shell(const std::string& command) {
+  pid_t pid = 0;
+  const char* argv[] = {"/bin/sh", "-c", command.c_str(), nullptr};
+  if (posix_spawn(&pid, "/bin/sh", nullptr, nullptr, const_cast<char* const*>(argv), environ) != 0) return -1;
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) return -1;
+  if (WIFEXITED(status)) return WEXITSTATUS(status);
+  if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
+  return -1;
+}
+
+}  // namespace sma::process

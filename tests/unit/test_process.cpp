@@ -1,0 +1,49 @@
+// run_shell (plugin/core/process.hpp): exit statuses, a death by a signal, and the caller's
+// SIGINT left as it was while the child runs (system() ignores it: an INT to a scene was lost).
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "core/process.hpp"
+
+namespace {
+
+TEST(RunShell, ExitStatusAndSignal) {
+  EXPECT_EQ(sma::process::run_shell("true"), 0);
+  EXPECT_EQ(sma::process::run_shell("exit 3"), 3);
+  EXPECT_EQ(sma::process::run_shell("kill -TERM $$"), 128 + SIGTERM);
+  EXPECT_EQ(sma::process::run_shell("exec /nonexistent/program 2> /dev/null"), 127);
+}
+
+// The child reads its parent's ignored-signal mask (/proc/<ppid>/status, SigIgn, hexadecimal):
+// SIGINT (bit 2 - 1) must not be in it while the child runs; with std::system it is.
+unsigned long long ParentIgnoredWhileChildRuns(bool viaSystem) {
+  char name[] = "/tmp/sma-process-XXXXXX";
+  const int fd = mkstemp(name);
+  close(fd);
+  const std::string command = std::string("awk '/^SigIgn/ {print $2}' /proc/$PPID/status > ") + name;
+  if (viaSystem) {
+    EXPECT_EQ(std::system(command.c_str()), 0);
+  } else {
+    EXPECT_EQ(sma::process::run_shell(command), 0);
+  }
+  std::ifstream in(name);
+  std::string hex;
+  in >> hex;
+  std::remove(name);
+  return std::stoull(hex, nullptr, 16);
+}
+
+TEST(RunShell, CallerKeepsItsInterrupt) {
+  const unsigned long long intBit = 1ULL << (SIGINT - 1);
+  ASSERT_EQ(std::signal(SIGINT, SIG_DFL), SIG_DFL);
+  EXPECT_EQ(ParentIgnoredWhileChildRuns(false) & intBit, 0ULL);
+  // (the check can fail: system() ignores SIGINT in the caller meanwhile)
+  EXPECT_NE(ParentIgnoredWhileChildRuns(true) & intBit, 0ULL);
+}
+
+}  // namespace
