@@ -14,7 +14,8 @@ where the fronts cross the ring) and the transient; the whole process's wall tim
 to exit, the median of --repeat runs) and CPU time; the steps, the moves. Orders: the least-squares
 slope of log error against log nr over each series. Goals (issue 48, item 4): within 0.1 % over
 the window in at most 3 s of whole process; within 0.5 % in at most a third of the 1500 fixed
-steps' whole process.
+steps' whole process. Besides, the runs' own mesh-error estimates (-meshestimate 1) of four of
+these configurations against the error measured.
 
     tools/bench/mesh_adaptation.py [--repeat 3]   writes results/bench/mesh-adaptation.json and
                                                   docs/benchmarks/mesh-adaptation.md, .png
@@ -64,6 +65,29 @@ def run_case(label, args, repeat):
     return row
 
 
+# The runs' own mesh-error estimates (-meshestimate 1: the run again on half the layers, Richardson
+# with order 1), against the error measured from p*.
+ESTIMATED = [("default (18 layers)", ["-tol", 1e-3]),
+             ("fixed 36 layers", ["-mesh", "meshes/sleeve-aniso36.msh", "-tol", TOL]),
+             ("fixed 108 layers", ["-mesh", "meshes/sleeve-aniso108.msh", "-tol", TOL]),
+             ("moving 36 layers", ["-mesh", "meshes/sleeve-aniso36.msh", "-tol", TOL, "-movinglayers", 1])]
+
+
+def estimate_case(label, args):
+    out = os.path.join(OUT, "mesh-adaptation", "estimate-" + label.split(" (")[0].replace(" ", "-"))
+    _, s, _ = run(SCRIPT, out, "-scale", "paper", "-quiet", 1, "-vtkevery", 0, "-meshestimate", 1, *args)
+    e = curve_error(os.path.join(out, "history.csv"), mesh_study.REFERENCE)
+    row = {"case": label, "args": [str(a) for a in args], "coarse_layers": s["mesh_estimate_coarse_layers"],
+           "estimate_window": s["mesh_error_estimate_window"], "estimate_transient": s["mesh_error_estimate_transient"],
+           "error_window": e["l1_reversion"], "error_transient": e["l1_transient"],
+           "time_error_estimate_transient": s["time_error_estimate_transient"]}
+    row["effectivity_window"] = row["estimate_window"] / row["error_window"]
+    row["effectivity_transient"] = row["estimate_transient"] / row["error_transient"]
+    print(f"mesh_adaptation: {label} -meshestimate 1: window {100 * row['estimate_window']:.3f} % estimated, "
+          f"{100 * row['error_window']:.3f} % measured", flush=True)
+    return row
+
+
 def slope(ns, es):
     """The least-squares order k of e = C n^-k."""
     x = [math.log(n) for n in ns]
@@ -85,11 +109,12 @@ def measure(results=None, repeat=3, quick=False):
     default = run_case("default", ["-tol", 1e-3], repeat)  # (common.run would give it fixed steps)
     paper = run_case("fixed-1500-steps", ["-tol", 0], repeat)
     orders = {kind: slope([r["nr"] for r in rows], [r["l1_reversion"] for r in rows]) for kind, rows in series.items()}
+    estimates = [estimate_case(label, args) for label, args in ESTIMATED if quick is False or "108" not in label]
     every = series["fixed"] + series["moving"] + [default]
     best = min((r for r in every if r["l1_reversion"] <= TARGET), key=lambda r: r["process_seconds"], default=None)
     loose = min((r for r in every if r["l1_reversion"] <= LOOSE), key=lambda r: r["process_seconds"], default=None)
     record = {"machine": machine(), "repeat": repeat, "tol": TOL, "quick": quick, "nt": NT, "series": series, "default": default,
-              "paper_steps": paper, "orders": orders,
+              "paper_steps": paper, "orders": orders, "estimates": estimates,
               "goal_tight": {"target": TARGET, "seconds": TARGET_SECONDS, "best": best,
                              "met": best is not None and best["process_seconds"] <= TARGET_SECONDS},
               "goal_loose": {"target": LOOSE, "share": LOOSE_SHARE, "best": loose,
@@ -149,7 +174,19 @@ def write_doc(record, plt=None):
                      f"{r['move_seconds']:.2f} | {r['process_seconds']:.2f} | {r['cpu_seconds']:.2f} | "
                      f"{pct(r['l1_reversion'])} | {pct(r['l1_transient'])} | {r['time_error_estimate']:.1e} |")
     lines += ["", "default: the scene's default run (-tol 1e-3, 18 x 18); fixed-1500-steps: the same mesh, -tol 0.",
-              "", "![mesh adaptation](mesh-adaptation.png)", ""]
+              "", "![mesh adaptation](mesh-adaptation.png)", "",
+              "## The runs' own mesh-error estimates", "",
+              "`-meshestimate 1` (edp/problems/sleeve/mesh-estimate.idp): the run again on half the layers, "
+              "Richardson with order 1; effectivity = estimate / error measured against p* (which holds the time "
+              "error too: the runs' `time_error_estimate_transient` beside it).", "",
+              "| run | against | estimate, window | measured | effectivity | estimate, transient | measured | "
+              "effectivity | time estimate, transient |", "|---|---|---|---|---|---|---|---|---|"]
+    for r in record.get("estimates", []):
+        lines.append(f"| {r['case']} | {r['coarse_layers']} layers | {pct(r['estimate_window'])} | "
+                     f"{pct(r['error_window'])} | {r['effectivity_window']:.2f} | {pct(r['estimate_transient'])} | "
+                     f"{pct(r['error_transient'])} | {r['effectivity_transient']:.2f} | "
+                     f"{pct(r['time_error_estimate_transient'])} |")
+    lines.append("")
     fig, ax = plt.subplots(1, 2, figsize=(10, 4))
     for kind, marker in (("fixed", "o-"), ("moving", "s-")):
         ax[0].loglog([r["nr"] for r in s[kind]], [100 * r["l1_reversion"] for r in s[kind]], marker,
