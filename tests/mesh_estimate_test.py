@@ -14,7 +14,12 @@ sleeve-radial at nr 40 (against their companions on 9 layers, 20 elements):
   - a later run in the same folder without -meshestimate leaves no companion (its summary.json
     "mesh_error_estimate": null);
   - a mesh it cannot halve (an unstructured ring) is refused before the folder is taken, naming
-    -meshestimate: the folder's earlier results stay.
+    -meshestimate: the folder's earlier results stay;
+  - -layers 36 remakes the structured ring with 36 layers: the run equals -mesh
+    meshes/sleeve-aniso36.msh's (its force curve to 1e-9, the node count);
+  - -balance 1 (sleeve-radial, sleeve-circular): the layers are the pilot's, ceil(nr0 mesh / time)
+    from its two estimates over the transient (clamped), the run is on them and reports its own mesh
+    estimate, and no scratch folder is left in /tmp; -balance with -layers, and -layers 1, refused.
 Writes results/checks/mesh_estimate.json.
 """
 import json
@@ -75,6 +80,46 @@ def main():
     check(proc.returncode == 1 and message and "-meshestimate 1" in message[-1] and kept,
           f"an unstructured ring is refused before the folder is taken (exit {proc.returncode}, earlier results "
           f"{'kept' if kept else 'LOST'}): {message[-1] if message else '(no error line)'}")
+    # -layers N: the structured ring remade with N layers equals the mesh file of N layers (to round-off:
+    # the radii are read back from the loaded mesh)
+    a, pa = run_scene_captured("sleeve-circular", "mesh-estimate-layers36", "-quiet", "1", "-vtkevery", "0", "-layers", "36")
+    b, pb = run_scene_captured("sleeve-circular", "mesh-estimate-aniso36", "-quiet", "1", "-vtkevery", "0",
+                               "-mesh", "meshes/sleeve-aniso36.msh")
+    if pa.returncode == 0 and pb.returncode == 0:
+        same = curve_error(os.path.join(a, "history.csv"), os.path.join(b, "history.csv"))["l1"]
+        sa, sb = summary_of(a), summary_of(b)
+        check(sa["nodes"] == sb["nodes"] == 37 * 19 and sa["layers_chosen"] == 36 and same < 1e-9,
+              f"-layers 36 is meshes/sleeve-aniso36.msh: {sa['nodes']} nodes (37 x 19), the force curves {same:.1e} apart")
+    else:
+        check(False, f"-layers 36 / -mesh sleeve-aniso36 exit {pa.returncode} / {pb.returncode} {pa.stdout[-300:]}")
+    # -balance 1: the layers from the pilot's two estimates, C / nr set to the time error; the run then
+    # reports its own mesh error; its scratch folder of /tmp is gone
+    scratch = lambda: {n for n in os.listdir("/tmp") if n.startswith("sma-sleeve-")}  # noqa: E731
+    before = scratch()
+    for scene, extra, nodes in (("sleeve-radial", [], lambda n: n + 1),
+                                ("sleeve-circular", ["-vtkevery", "0"], lambda n: (n + 1) * 19)):
+        out, proc = run_scene_captured(scene, f"mesh-estimate-balance-{scene}", "-quiet", "1", "-balance", "1", *extra)
+        if proc.returncode != 0:
+            check(False, f"{scene} -balance 1 exit {proc.returncode} {proc.stdout[-300:]}")
+            continue
+        s = summary_of(out)
+        b = s["balance"]
+        wanted = -(-b["pilot_layers"] * b["pilot_mesh_error_estimate_transient"] // b["pilot_time_error_estimate_transient"])
+        data[f"balance_{scene}"] = {**b, "nodes": s["nodes"], "mesh_error_estimate_transient": s["mesh_error_estimate_transient"],
+                                    "time_error_estimate_transient": s["time_error_estimate_transient"]}
+        check(b["layers"] == max(4, min(wanted, 20000 if scene == "sleeve-radial" else 400)) and s["nodes"] == nodes(b["layers"])
+              and s["mesh_estimate_layers"] == b["layers"] and s["mesh_error_estimate_transient"] > 0,
+              f"{scene} -balance 1: the pilot on {b['pilot_layers']} (time {b['pilot_time_error_estimate_transient']:.2e}, "
+              f"mesh {b['pilot_mesh_error_estimate_transient']:.2e} over the transient) gives {b['layers']} layers "
+              f"({s['nodes']} nodes); the run's own mesh estimate {s['mesh_error_estimate_transient']:.2e}, time "
+              f"{s['time_error_estimate_transient']:.2e}")
+    left = scratch() - before
+    check(not left, f"-balance 1 leaves no scratch folder in /tmp (left: {sorted(left) or 'none'})")
+    for args, word in ((["-balance", "1", "-layers", "36"], "-balance 1"), (["-layers", "1"], "-layers 1")):
+        _, proc = run_scene_captured("sleeve-circular", "mesh-estimate-refused", "-quiet", "1", *args)
+        message = [l for l in (proc.stdout + proc.stderr).splitlines() if l.startswith("error:")]
+        check(proc.returncode == 1 and message and word in message[-1],
+              f"{' '.join(args)}: exit {proc.returncode}, {message[-1] if message else '(no error line)'}")
     record("mesh_estimate", data)
     finish()
 

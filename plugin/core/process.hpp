@@ -12,8 +12,11 @@
 #include <sys/types.h>
 #include <sys/wait.h>
 
+#include <stdlib.h>
+
 #include <cerrno>
 #include <string>
+#include <vector>
 
 extern char** environ;
 
@@ -31,6 +34,17 @@ inline int run_shell(const std::string& command) {
   if (WIFEXITED(status)) return WEXITSTATUS(status);
   if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
   return -1;
+}
+
+// A new, empty directory /tmp/<prefix>XXXXXX of this process's own (mkdtemp), for a scene's
+// scratch runs; "" when it cannot be made (or the prefix holds a slash).
+inline std::string temporary_directory(const std::string& prefix) {
+  if (prefix.find('/') != std::string::npos) return {};
+  std::string pattern = "/tmp/" + prefix + "XXXXXX";
+  std::vector<char> name(pattern.begin(), pattern.end());
+  name.push_back('\0');
+  if (mkdtemp(name.data()) == nullptr) return {};
+  return std::string(name.data());
 }
 
 }  // namespace sma::process

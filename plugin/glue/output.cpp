@@ -261,6 +261,9 @@ long ProbeRowWrite(std::ostream* const& f, KN<double>* const& head, KN<double>* 
 string* JsonQuote(Stack stack, string* const& text) { return NewString(stack, sma::json::quote(*text)); }
 string* ShellQuote(Stack stack, string* const& text) { return NewString(stack, sma::files::shell_quote(*text)); }
 long RunCommand(string* const& command) { return sma::process::run_shell(*command); }
+string* TemporaryDirectory(Stack stack, string* const& prefix) {
+  return NewString(stack, sma::process::temporary_directory(*prefix));
+}
 
 }  // namespace
 
@@ -297,6 +300,7 @@ void AddOutputFunctions() {
   Global.Add("MeshFileError", "(", new OneOperator2s_<S, S, double>(MeshFileError));
   Global.Add("ShellQuote", "(", new OneOperator1s_<S, S>(ShellQuote));
   Global.Add("RunCommand", "(", new OneOperator1_<long, S>(RunCommand));
+  Global.Add("TemporaryDirectory", "(", new OneOperator1s_<S, S>(TemporaryDirectory));
 }
 
 }  // namespace sma_glue

@@ -8,6 +8,9 @@
 #include <sstream>
 #include <string>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include "core/process.hpp"
 
 namespace {
@@ -44,6 +47,20 @@ TEST(RunShell, CallerKeepsItsInterrupt) {
   EXPECT_EQ(ParentIgnoredWhileChildRuns(false) & intBit, 0ULL);
   // (the check can fail: system() ignores SIGINT in the caller meanwhile)
   EXPECT_NE(ParentIgnoredWhileChildRuns(true) & intBit, 0ULL);
+}
+
+TEST(TemporaryDirectory, NewEmptyAndOwn) {
+  const std::string a = sma::process::temporary_directory("sma-test-"), b = sma::process::temporary_directory("sma-test-");
+  ASSERT_FALSE(a.empty());
+  EXPECT_NE(a, b);
+  EXPECT_EQ(a.rfind("/tmp/sma-test-", 0), 0U);
+  struct stat st {};
+  ASSERT_EQ(stat(a.c_str(), &st), 0);
+  EXPECT_TRUE(S_ISDIR(st.st_mode));
+  EXPECT_EQ(st.st_mode & 0777, 0700U);  // (mkdtemp: the owner's alone)
+  EXPECT_EQ(rmdir(a.c_str()), 0);       // (empty)
+  EXPECT_EQ(rmdir(b.c_str()), 0);
+  EXPECT_EQ(sma::process::temporary_directory("a/b"), "");
 }
 
 }  // namespace
