@@ -36,7 +36,6 @@ The oracles (tools/bench/oracles: closed forms, the curve metric, the scheme in 
 independent of the code they check: they import nothing of python/sma.
 """
 import argparse
-import json
 import os
 import sys
 import time
@@ -53,7 +52,7 @@ import scaling
 import study
 import time_steps
 import work_precision
-from common import OUT, QUICK, machine
+from common import OUT, QUICK, machine, write_json
 
 # The sections that need no reference curve, each alone (--only): results/bench/only-<name>.json.
 ALONE = {"kernels": kernels.measure, "psor": psor.measure, "ring-lame": ring_lame.measure,
@@ -82,9 +81,7 @@ def main():
     if args.only:
         ALONE[args.only](results)
         path = os.path.join(OUT, f"only-{args.only}.json")
-        with open(path + ".partial", "w") as f:
-            json.dump(results, f, indent=2, allow_nan=False)
-        os.replace(path + ".partial", path)
+        write_json(path, results)
         print(f"bench: {args.only} done in {time.perf_counter() - bench_start:.0f} s: {os.path.relpath(path)}")
         return
     reference = study.radial_reference(results)
@@ -101,9 +98,7 @@ def main():
     mesh_adaptation.write_doc(mesh_adaptation.measure(results, quick=QUICK), plt)
 
     results["bench_wall_seconds"] = time.perf_counter() - bench_start
-    with open(os.path.join(OUT, "summary.json.partial"), "w") as f:
-        json.dump(results, f, indent=2, allow_nan=False)  # a NaN fails here, not in a reader
-    os.replace(os.path.join(OUT, "summary.json.partial"), os.path.join(OUT, "summary.json"))
+    write_json(os.path.join(OUT, "summary.json"), results)
     report.write_doc(results, plt)
     print(f"bench: done in {results['bench_wall_seconds']:.0f} s: results/bench/summary.json, docs/benchmarks.md")
 

@@ -30,6 +30,19 @@ QUICK = "--quick" in sys.argv
 FINE_FPMAXIT = ["-fpmaxit", 1000]
 
 
+def write_whole(path, text):
+    """path written as path.partial, then renamed: a run stopped meanwhile leaves no cut file."""
+    os.makedirs(os.path.dirname(path) or ".", exist_ok=True)
+    with open(path + ".partial", "w") as f:
+        f.write(text)
+    os.replace(path + ".partial", path)
+
+
+def write_json(path, data):
+    """data as JSON (indented; a NaN fails here, not in a reader), written whole."""
+    write_whole(path, json.dumps(data, indent=2, allow_nan=False))
+
+
 def run(script, out, *args, allow_failure=False, result="summary.json", env=None):
     """Runs tools/ff script -out out args (env: variables added to the environment); returns
     (process wall seconds, the JSON file `result` it wrote in out or None, the error message or "")."""
@@ -105,9 +118,7 @@ def run_alone(name, measure, section):
     out = os.path.join(ROOT, "results", f"bench-{name}")
     record = measure(out, QUICK)
     os.makedirs(out, exist_ok=True)
-    with open(os.path.join(out, "summary.json.partial"), "w") as f:
-        json.dump(record, f, indent=2, allow_nan=False)
-    os.replace(os.path.join(out, "summary.json.partial"), os.path.join(out, "summary.json"))
+    write_json(os.path.join(out, "summary.json"), record)
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt

@@ -6,7 +6,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import save  # noqa: E402
+from common import save, write_whole  # noqa: E402
 from sma.plotting import pyplot  # noqa: E402
 from markdown_wrap import wrap  # noqa: E402
 from elliptic_mesh_study import DOC, PNG, SCENES, LADDER, NT_DEFAULT, LAYERS, TARGET, KINDS  # noqa: E402
@@ -287,6 +287,4 @@ def write_doc(rec):
         if scene in rec["analysis"]:
             L += orders_text(rec, scene) + [""]
     L += ["## Conclusion", "", conclusion(rec), "", f"![error against h]({os.path.basename(png)})", ""]
-    with open(DOC + ".partial", "w") as f:
-        f.write(wrap("\n".join(L)))
-    os.replace(DOC + ".partial", DOC)
+    write_whole(DOC, wrap("\n".join(L)))

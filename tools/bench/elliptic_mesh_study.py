@@ -55,7 +55,7 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import ROOT, machine, run  # noqa: E402
+from common import ROOT, machine, run, write_json  # noqa: E402
 from mesh_study import mesh, difference_order  # noqa: E402
 from curve_error import curve_error, read_history, l1_errors, reversion_time, austenite_time  # noqa: E402
 import numpy as np  # noqa: E402
@@ -142,10 +142,7 @@ def run_case(scene, nr, nt):
 
 
 def save_record(rec):
-    os.makedirs(OUT, exist_ok=True)
-    with open(os.path.join(OUT, "summary.json.partial"), "w") as f:
-        json.dump(rec, f, indent=2, allow_nan=False)
-    os.replace(os.path.join(OUT, "summary.json.partial"), os.path.join(OUT, "summary.json"))
+    write_json(os.path.join(OUT, "summary.json"), rec)
 
 
 def measure(reference_n, resume):

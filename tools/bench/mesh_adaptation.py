@@ -30,7 +30,7 @@ import statistics
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import OUT, ROOT, machine, run, save  # noqa: E402
+from common import OUT, ROOT, machine, run, save, write_json, write_whole  # noqa: E402
 from markdown_wrap import wrap  # noqa: E402
 from curve_error import curve_error  # noqa: E402
 import mesh_study  # noqa: E402
@@ -127,11 +127,7 @@ def measure(results=None, repeat=3, quick=False):
                              "met": loose is not None and loose["process_seconds"] <= LOOSE_SHARE * paper["process_seconds"]}}
     if results is not None:
         results["mesh_adaptation"] = record
-    path = os.path.join(OUT, "mesh-adaptation.json")
-    os.makedirs(OUT, exist_ok=True)
-    with open(path + ".partial", "w") as f:
-        json.dump(record, f, indent=2, allow_nan=False)
-    os.replace(path + ".partial", path)
+    write_json(os.path.join(OUT, "mesh-adaptation.json"), record)
     return record
 
 
@@ -227,9 +223,7 @@ def write_doc(record, plt=None):
         a.axhline(100 * TARGET, color="grey", lw=0.8)
         a.legend()
     save(fig, "mesh-adaptation.png")
-    with open(DOC + ".partial", "w") as f:
-        f.write(wrap("\n".join(lines)))
-    os.replace(DOC + ".partial", DOC)
+    write_whole(DOC, wrap("\n".join(lines)))
 
 
 def main():

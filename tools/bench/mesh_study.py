@@ -38,7 +38,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import ROOT, machine, run, save  # noqa: E402
+from common import ROOT, machine, run, save, write_json, write_whole  # noqa: E402
 from sma.plotting import pyplot  # noqa: E402
 from markdown_wrap import wrap  # noqa: E402  (tools/: the generated pages' prose wrapped as the hand-written)
 from curve_error import curve_error, read_history, reversion_time, austenite_time  # noqa: E402
@@ -137,10 +137,7 @@ def measure(repeat):
 
 
 def save_record(record):
-    os.makedirs(OUT, exist_ok=True)
-    with open(os.path.join(OUT, "summary.json.partial"), "w") as f:
-        json.dump(record, f, indent=2, allow_nan=False)
-    os.replace(os.path.join(OUT, "summary.json.partial"), os.path.join(OUT, "summary.json"))
+    write_json(os.path.join(OUT, "summary.json"), record)
 
 
 # ---- analysis: every curve and p* on one grid (the union of their steps), exact L1 norms ----
@@ -376,9 +373,7 @@ def write_doc(rec):
           f"(the terms partly cancel): the tables' model column, within {100 * dev:.0f} % of the measured errors "
           f"at every mesh of (a) and (b).", "",
           "## Conclusion", "", conclusion(rec, a), "", f"![error against wall time]({os.path.basename(png)})", ""]
-    with open(DOC + ".partial", "w") as f:
-        f.write(wrap("\n".join(L)))  # prose at 100 columns (a page's line: at most 400)
-    os.replace(DOC + ".partial", DOC)
+    write_whole(DOC, wrap("\n".join(L)))  # prose at 100 columns (a page's line: at most 400)
 
 
 if __name__ == "__main__":

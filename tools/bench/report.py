@@ -1,7 +1,6 @@
 """docs/benchmarks.md and its PNGs (docs/benchmarks/) from make bench's results (the dict of
 results/bench/summary.json): the header, the goals and what the numbers say, then each section's
 part in turn (their figures and doc functions)."""
-import os
 
 import against_numpy
 import default_run
@@ -13,7 +12,7 @@ import ring_lame
 import scaling
 import study
 import work_precision
-from common import DOC, save
+from common import DOC, save, write_whole
 from markdown_wrap import wrap  # tools/: prose lines wrapped at 100 columns
 from study import G_SWEEP
 
@@ -166,7 +165,4 @@ def write_doc(r, plt):
     psor.doc(r, w, pngs)
     ring_lame.doc(r, w, pngs)
     against_numpy.doc(r, w)
-    os.makedirs(os.path.dirname(DOC), exist_ok=True)
-    with open(DOC + ".partial", "w") as f:
-        f.write(wrap("\n".join(lines)))
-    os.replace(DOC + ".partial", DOC)
+    write_whole(DOC, wrap("\n".join(lines)))

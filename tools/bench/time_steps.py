@@ -21,7 +21,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import OUT, ROOT, run  # noqa: E402
+from common import OUT, ROOT, run, write_whole  # noqa: E402
 from curve_error import curve_error  # noqa: E402
 
 DOC = os.path.join(ROOT, "docs", "benchmarks", "time-steps.md")
@@ -96,10 +96,7 @@ def write_doc(table):
                          f"{fmt(r['effectivity'], '.2f')} | {fmt(r['l1_transient'])} | {fmt(r['estimate_transient'])} | "
                          f"{fmt(r['effectivity_transient'], '.2f')} | {fmt(r['l1_reversion'])} |")
         lines.append("")
-    os.makedirs(os.path.dirname(DOC), exist_ok=True)
-    with open(DOC + ".partial", "w") as f:
-        f.write("\n".join(lines))
-    os.replace(DOC + ".partial", DOC)
+    write_whole(DOC, "\n".join(lines))
 
 
 def main():
