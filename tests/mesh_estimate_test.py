@@ -19,17 +19,92 @@ sleeve-radial at nr 40 (against their companions on 9 layers, 20 elements):
     meshes/sleeve-aniso36.msh's (its force curve to 1e-9, the node count);
   - -balance 1 (sleeve-radial, sleeve-circular): the layers are the pilot's, ceil(nr0 mesh / time)
     from its two estimates over the transient (clamped), the run is on them and reports its own mesh
-    estimate, and no scratch folder is left in /tmp; -balance with -layers, and -layers 1, refused.
+    estimate, and no scratch folder is left in /tmp; -balance with -layers, and -layers 1, refused;
+  - both directions, -meshestimate 2 -meshlevels 3 (sleeve-elliptic, whose pressure varies around
+    the ring, on -arcs 18: 18 x 18): the run is -mesh meshes/sleeve-aniso.msh's (18 x 18, force
+    curves to 1e-9); its companions are 9 x 9 and 4 x 4; the order is the one for which
+    (n3^-k - n2^-k) / (n2^-k - n^-k) is the two differences' ratio over the transient, and the
+    estimates use it, all recomputed here from the three histories to 1e-9; -balance 2 -meshlevels 3
+    takes ceil(18 (mesh / time)^(1 / k)) layers and as many arc segments, and reports its own
+    estimate in both directions; -meshestimate 3, -meshlevels 4, -balance 2 with -arcs, and
+    sleeve-radial's -balance 2 refused.
 Writes results/checks/mesh_estimate.json.
 """
-import json
+import math
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 from checklib import check, finish, record, run_scene_captured, summary_of  # noqa: E402
-from curve_error import curve_error  # noqa: E402
+from curve_error import austenite_time, curve_error, l1_errors, read_history  # noqa: E402
+
+
+def ratio_of_differences(k, n, n2, n3):
+    return (n3 ** -k - n2 ** -k) / (n2 ** -k - n ** -k)
+
+
+def both_directions(data):
+    """-meshestimate 2 -meshlevels 3, -arcs, -balance 2 on sleeve-elliptic (see the docstring)."""
+    out, proc = run_scene_captured("sleeve-elliptic", "mesh-estimate-elliptic", "-quiet", "1", "-vtkevery", "0",
+                                   "-arcs", "18", "-meshestimate", "2", "-meshlevels", "3")
+    same, pb = run_scene_captured("sleeve-elliptic", "mesh-estimate-elliptic-aniso", "-quiet", "1", "-vtkevery", "0",
+                                  "-mesh", "meshes/sleeve-aniso.msh")
+    if proc.returncode != 0 or pb.returncode != 0:
+        check(False, f"sleeve-elliptic -arcs 18 -meshestimate 2 -meshlevels 3 / -mesh sleeve-aniso exit {proc.returncode} "
+              f"/ {pb.returncode} {proc.stdout[-300:]}")
+        return
+    s = summary_of(out)
+    apart = curve_error(os.path.join(out, "history.csv"), os.path.join(same, "history.csv"))["l1"]
+    check(s["nodes"] == summary_of(same)["nodes"] == 19 * 19 and s["arcs_chosen"] == 18 and apart < 1e-9,
+          f"-arcs 18 on sleeve-quarter (18 x 90) is meshes/sleeve-aniso.msh: {s['nodes']} nodes, curves {apart:.1e} apart")
+    check((s["mesh_estimate_layers"], s["mesh_estimate_arcs"], s["mesh_estimate_coarse_layers"], s["mesh_estimate_coarse_arcs"],
+           s["mesh_estimate_coarsest_layers"], s["mesh_estimate_levels"]) == (18, 18, 9, 9, 4, 3),
+          f"-meshestimate 2 -meshlevels 3 on 18 x 18: companions {s['mesh_estimate_coarse_layers']} x "
+          f"{s['mesh_estimate_coarse_arcs']} and {s['mesh_estimate_coarsest_layers']} layers")
+    fine, half, quarter = (os.path.join(out, *p, "history.csv") for p in ((), ("mesh-estimate",),
+                                                                           ("mesh-estimate", "mesh-estimate")))
+    h, c, q = read_history(fine), read_history(half), read_history(quarter)
+    t_a = min(austenite_time(h) or h["t"][-1], h["t"][-1], c["t"][-1], q["t"][-1])
+    curve = lambda x: ([0.0] + x["t"], [0.0] + x["pressure_mean"])  # noqa: E731
+    fine_gap = l1_errors(*curve(c), *curve(h), t_a)[0]
+    coarse_gap = l1_errors(*curve(q), *curve(c), t_a)[0]
+    ratio = coarse_gap / fine_gap
+    lo, hi = 0.25, 4.0
+    for _ in range(60):
+        mid = (lo + hi) / 2
+        lo, hi = (mid, hi) if ratio_of_differences(mid, 18, 9, 4) < ratio else (lo, mid)
+    k = (lo + hi) / 2
+    again = curve_error(half, fine)
+    factor = 2 ** k - 1
+    pairs = [(s["mesh_estimate_difference_ratio"], ratio), (s["mesh_estimate_order"], k),
+             (s["mesh_error_estimate"], again["l1"] / factor), (s["mesh_error_estimate_transient"], again["l1_transient"] / factor),
+             (s["mesh_error_estimate_window"], again["l1_reversion"] / factor)]
+    worst = max(abs(a / b - 1) for a, b in pairs)
+    data["elliptic_both_directions"] = {"ratio": ratio, "order": k, "estimate_transient": s["mesh_error_estimate_transient"],
+                                        "estimate_window": s["mesh_error_estimate_window"]}
+    check(0.25 < k < 4 and worst < 1e-9, f"-meshlevels 3: the differences shrink by {ratio:.3f} (18, 9, 4): order {k:.3f}; "
+          f"the estimates (transient {100 * s['mesh_error_estimate_transient']:.3f} %) are the two histories' L1 difference "
+          f"over (2^k - 1), to {worst:.1e}")
+    out, proc = run_scene_captured("sleeve-elliptic", "mesh-estimate-elliptic-balance", "-quiet", "1", "-vtkevery", "0",
+                                   "-mesh", "meshes/sleeve-aniso.msh", "-balance", "2", "-meshlevels", "3")
+    if proc.returncode != 0:
+        check(False, f"sleeve-elliptic -balance 2 -meshlevels 3 exit {proc.returncode} {proc.stdout[-300:]}")
+        return
+    s = summary_of(out)
+    b = s["balance"]
+    wanted = math.ceil(18 * (b["pilot_mesh_error_estimate_transient"] / b["pilot_time_error_estimate_transient"])
+                       ** (1 / b["pilot_mesh_estimate_order"]))
+    layers = max(4, min(400, wanted))
+    data["elliptic_balance"] = {**b, "nodes": s["nodes"], "mesh_error_estimate_transient": s["mesh_error_estimate_transient"],
+                                "time_error_estimate_transient": s["time_error_estimate_transient"]}
+    check(abs(b["pilot_mesh_estimate_order"] / k - 1) < 1e-9 and b["layers"] == layers and b["arcs"] == layers
+          and s["nodes"] == (layers + 1) ** 2 and s["mesh_estimate_arcs"] == layers and s["mesh_estimate_coarse_arcs"] == layers // 2
+          and s["mesh_estimate_levels"] == 3 and s["mesh_error_estimate_transient"] > 0,
+          f"-balance 2: the pilot on 18 x 18 (order {b['pilot_mesh_estimate_order']:.3f}, time "
+          f"{b['pilot_time_error_estimate_transient']:.2e}, mesh {b['pilot_mesh_error_estimate_transient']:.2e}) gives "
+          f"{b['layers']} x {b['arcs']} ({s['nodes']} nodes); the run's own estimates: mesh "
+          f"{s['mesh_error_estimate_transient']:.2e}, time {s['time_error_estimate_transient']:.2e}")
 
 
 def main():
@@ -120,6 +195,15 @@ def main():
         message = [l for l in (proc.stdout + proc.stderr).splitlines() if l.startswith("error:")]
         check(proc.returncode == 1 and message and word in message[-1],
               f"{' '.join(args)}: exit {proc.returncode}, {message[-1] if message else '(no error line)'}")
+    both_directions(data)
+    for scene, args, word in (("sleeve-elliptic", ["-meshestimate", "3"], "-meshestimate 3"),
+                              ("sleeve-elliptic", ["-meshlevels", "4"], "-meshlevels 4"),
+                              ("sleeve-elliptic", ["-balance", "2", "-arcs", "18"], "-balance 2"),
+                              ("sleeve-radial", ["-balance", "2"], "-balance 2")):
+        _, proc = run_scene_captured(scene, "mesh-estimate-refused", "-quiet", "1", *args)
+        message = [l for l in (proc.stdout + proc.stderr).splitlines() if l.startswith("error:")]
+        check(proc.returncode == 1 and message and word in message[-1],
+              f"{scene} {' '.join(args)}: exit {proc.returncode}, {message[-1] if message else '(no error line)'}")
     record("mesh_estimate", data)
     finish()
 

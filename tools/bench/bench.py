@@ -32,6 +32,9 @@ summary.json with the headline figures) and docs/benchmarks.md with its PNGs in 
  10. moving layers against fixed meshes at the paper's scale, against p*: error over the reversion
      window, whole-process time, orders in the layers (docs/benchmarks/mesh-adaptation.md)
                                                                                mesh_adaptation.py
+ 11. the elliptic scenes at the paper's scale: their default mesh's 1500 steps against rings of n x n
+     with steps by -tol and -balance 2, against their 144 x 144 runs; the circular goals scaled
+     (docs/benchmarks/elliptic-adaptation.md)                                 elliptic_adaptation.py
 The oracles (tools/bench/oracles: closed forms, the curve metric, the scheme in numpy, GetFEM) are
 independent of the code they check: they import nothing of python/sma.
 """
@@ -42,6 +45,7 @@ import time
 
 import against_numpy
 import default_run
+import elliptic_adaptation
 import kernels
 import mesh_adaptation
 import psor
@@ -60,7 +64,8 @@ ALONE = {"kernels": kernels.measure, "psor": psor.measure, "ring-lame": ring_lam
          "pullout": lambda results: results.update(pullout=pullout.measure(OUT, QUICK)),
          "numpy": lambda results: results.update(radial_numpy=against_numpy.radial_against_numpy()),
          "time-steps": lambda results: time_steps.write_doc(time_steps.measure(results)),
-         "mesh-adaptation": lambda results: mesh_adaptation.write_doc(mesh_adaptation.measure(results, quick=QUICK))}
+         "mesh-adaptation": lambda results: mesh_adaptation.write_doc(mesh_adaptation.measure(results, quick=QUICK)),
+         "elliptic-adaptation": lambda results: elliptic_adaptation.write_doc(elliptic_adaptation.measure(results, quick=QUICK))}
 
 
 def main():
@@ -96,6 +101,7 @@ def main():
     results["radial_numpy"] = against_numpy.radial_against_numpy()
     time_steps.write_doc(time_steps.measure(results))
     mesh_adaptation.write_doc(mesh_adaptation.measure(results, quick=QUICK), plt)
+    elliptic_adaptation.write_doc(elliptic_adaptation.measure(results, quick=QUICK))
 
     results["bench_wall_seconds"] = time.perf_counter() - bench_start
     write_json(os.path.join(OUT, "summary.json"), results)
