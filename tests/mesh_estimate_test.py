@@ -27,7 +27,13 @@ sleeve-radial at nr 40 (against their companions on 9 layers, 20 elements):
     estimates use it, all recomputed here from the three histories to 1e-9; -balance 2 -meshlevels 3
     takes ceil(18 (mesh / time)^(1 / k)) layers and as many arc segments, and reports its own
     estimate in both directions; -meshestimate 3, -meshlevels 4, -balance 2 with -arcs, and
-    sleeve-radial's -balance 2 refused.
+    sleeve-radial's -balance 2 refused;
+  - sleeve-axisymmetric (the (r, z) mesh, -nr and its square cells halved together) at -nr 4,
+    -meshestimate 1 -meshlevels 3 (companions at 2 and 1): the estimates and the order recomputed
+    from the three histories, and its effectivity against the -nr 16 run (whose own error is about a
+    tenth of nr 4's: measured 0.04 % against 0.5 % over the transient, nr 16 against 32) in [0.5, 2]
+    (measured 1.25 / 1.17; against nr 32: 1.16 / 1.06); -balance 1 -meshlevels 3 -tol 3e-3 from -nr 4
+    takes ceil(4 (mesh / time)^(1 / k)) elements and square cells.
 Writes results/checks/mesh_estimate.json.
 """
 import math
@@ -42,6 +48,66 @@ from curve_error import austenite_time, curve_error, l1_errors, read_history  # 
 
 def ratio_of_differences(k, n, n2, n3):
     return (n3 ** -k - n2 ** -k) / (n2 ** -k - n ** -k)
+
+
+def three_levels(out, n, n2, n3):
+    """From a run with -meshlevels 3 in out: (ratio, order, [(reported, recomputed)...]) recomputed from the
+    three histories (the difference ratio over the transient, the order by bisection, the estimates)."""
+    s = summary_of(out)
+    fine, half, quarter = (os.path.join(out, *p, "history.csv") for p in ((), ("mesh-estimate",),
+                                                                           ("mesh-estimate", "mesh-estimate")))
+    h, c, q = read_history(fine), read_history(half), read_history(quarter)
+    t_a = min(austenite_time(h) or h["t"][-1], h["t"][-1], c["t"][-1], q["t"][-1])
+    curve = lambda x: ([0.0] + x["t"], [0.0] + x["pressure_mean"])  # noqa: E731
+    ratio = l1_errors(*curve(q), *curve(c), t_a)[0] / l1_errors(*curve(c), *curve(h), t_a)[0]
+    lo, hi = 0.25, 4.0
+    for _ in range(60):
+        mid = (lo + hi) / 2
+        lo, hi = (mid, hi) if ratio_of_differences(mid, n, n2, n3) < ratio else (lo, mid)
+    k = (lo + hi) / 2
+    again = curve_error(half, fine)
+    factor = (n / n2) ** k - 1
+    pairs = [(s["mesh_estimate_difference_ratio"], ratio), (s["mesh_estimate_order"], k),
+             (s["mesh_error_estimate"], again["l1"] / factor), (s["mesh_error_estimate_transient"], again["l1_transient"] / factor),
+             (s["mesh_error_estimate_window"], again["l1_reversion"] / factor)]
+    return ratio, k, max(abs(a / b - 1) for a, b in pairs)
+
+
+def axisymmetric(data):
+    """-meshestimate 1 -meshlevels 3 and -balance 1 on sleeve-axisymmetric (see the docstring)."""
+    ref, pr = run_scene_captured("sleeve-axisymmetric", "mesh-estimate-axisymmetric-nr16", "-quiet", "1", "-nr", "16")
+    out, proc = run_scene_captured("sleeve-axisymmetric", "mesh-estimate-axisymmetric", "-quiet", "1", "-nr", "4",
+                                   "-meshestimate", "1", "-meshlevels", "3")
+    if pr.returncode != 0 or proc.returncode != 0:
+        check(False, f"sleeve-axisymmetric -nr 16 / -nr 4 -meshestimate 1 -meshlevels 3 exit {pr.returncode} / "
+              f"{proc.returncode} {proc.stdout[-300:]}")
+        return
+    s = summary_of(out)
+    ratio, k, worst = three_levels(out, 4, 2, 1)
+    check((s["mesh_estimate_layers"], s["mesh_estimate_coarse_layers"], s["mesh_estimate_coarsest_layers"]) == (4, 2, 1)
+          and 0.25 < k < 4 and worst < 1e-9, f"sleeve-axisymmetric -nr 4 -meshlevels 3: differences shrink by {ratio:.3f} "
+          f"(4, 2, 1): order {k:.3f}; the estimates recomputed from the three histories to {worst:.1e}")
+    e = curve_error(os.path.join(out, "history.csv"), os.path.join(ref, "history.csv"))
+    window = s["mesh_error_estimate_window"] / e["l1_reversion"]
+    transient = s["mesh_error_estimate_transient"] / e["l1_transient"]
+    data["axisymmetric"] = {"order": k, "effectivity_window": window, "effectivity_transient": transient}
+    check(0.5 <= window <= 2 and 0.5 <= transient <= 2,
+          f"sleeve-axisymmetric -nr 4: effectivity against -nr 16 {window:.2f} over the window, {transient:.2f} over the "
+          "transient, in [0.5, 2]")
+    out, proc = run_scene_captured("sleeve-axisymmetric", "mesh-estimate-axisymmetric-balance", "-quiet", "1", "-nr", "4",
+                                   "-balance", "1", "-meshlevels", "3", "-tol", "3e-3")
+    if proc.returncode != 0:
+        check(False, f"sleeve-axisymmetric -balance 1 exit {proc.returncode} {proc.stdout[-300:]}")
+        return
+    s = summary_of(out)
+    b = s["balance"]
+    n = max(2, min(2000, math.ceil(4 * (b["pilot_mesh_error_estimate_transient"] / b["pilot_time_error_estimate_transient"])
+                                   ** (1 / b["pilot_mesh_estimate_order"]))))
+    p = s["parameters"]
+    check(b["layers"] == n and p["nr"] == n and p["nz"] == 5 * n and s["mesh_estimate_layers"] == n,
+          f"sleeve-axisymmetric -balance 1 from -nr 4 (order {b['pilot_mesh_estimate_order']:.2f}, time "
+          f"{b['pilot_time_error_estimate_transient']:.2e}, mesh {b['pilot_mesh_error_estimate_transient']:.2e}): -nr {p['nr']}, "
+          f"-nz {p['nz']} (square cells), its own estimate {s['mesh_error_estimate_transient']:.2e}")
 
 
 def both_directions(data):
@@ -62,25 +128,7 @@ def both_directions(data):
            s["mesh_estimate_coarsest_layers"], s["mesh_estimate_levels"]) == (18, 18, 9, 9, 4, 3),
           f"-meshestimate 2 -meshlevels 3 on 18 x 18: companions {s['mesh_estimate_coarse_layers']} x "
           f"{s['mesh_estimate_coarse_arcs']} and {s['mesh_estimate_coarsest_layers']} layers")
-    fine, half, quarter = (os.path.join(out, *p, "history.csv") for p in ((), ("mesh-estimate",),
-                                                                           ("mesh-estimate", "mesh-estimate")))
-    h, c, q = read_history(fine), read_history(half), read_history(quarter)
-    t_a = min(austenite_time(h) or h["t"][-1], h["t"][-1], c["t"][-1], q["t"][-1])
-    curve = lambda x: ([0.0] + x["t"], [0.0] + x["pressure_mean"])  # noqa: E731
-    fine_gap = l1_errors(*curve(c), *curve(h), t_a)[0]
-    coarse_gap = l1_errors(*curve(q), *curve(c), t_a)[0]
-    ratio = coarse_gap / fine_gap
-    lo, hi = 0.25, 4.0
-    for _ in range(60):
-        mid = (lo + hi) / 2
-        lo, hi = (mid, hi) if ratio_of_differences(mid, 18, 9, 4) < ratio else (lo, mid)
-    k = (lo + hi) / 2
-    again = curve_error(half, fine)
-    factor = 2 ** k - 1
-    pairs = [(s["mesh_estimate_difference_ratio"], ratio), (s["mesh_estimate_order"], k),
-             (s["mesh_error_estimate"], again["l1"] / factor), (s["mesh_error_estimate_transient"], again["l1_transient"] / factor),
-             (s["mesh_error_estimate_window"], again["l1_reversion"] / factor)]
-    worst = max(abs(a / b - 1) for a, b in pairs)
+    ratio, k, worst = three_levels(out, 18, 9, 4)
     data["elliptic_both_directions"] = {"ratio": ratio, "order": k, "estimate_transient": s["mesh_error_estimate_transient"],
                                         "estimate_window": s["mesh_error_estimate_window"]}
     check(0.25 < k < 4 and worst < 1e-9, f"-meshlevels 3: the differences shrink by {ratio:.3f} (18, 9, 4): order {k:.3f}; "
@@ -196,6 +244,7 @@ def main():
         check(proc.returncode == 1 and message and word in message[-1],
               f"{' '.join(args)}: exit {proc.returncode}, {message[-1] if message else '(no error line)'}")
     both_directions(data)
+    axisymmetric(data)
     for scene, args, word in (("sleeve-elliptic", ["-meshestimate", "3"], "-meshestimate 3"),
                               ("sleeve-elliptic", ["-meshlevels", "4"], "-meshlevels 4"),
                               ("sleeve-elliptic", ["-balance", "2", "-arcs", "18"], "-balance 2"),
