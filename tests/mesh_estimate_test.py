@@ -73,6 +73,20 @@ def three_levels(out, n, n2, n3):
     return ratio, k, max(abs(a / b - 1) for a, b in pairs)
 
 
+def balanced(scene, folder, n0, lo, hi, *args):
+    """A -balance run from n0: (its summary, the resolution its pilot's estimates give, ceil(n0 (mesh /
+    time)^(1 / k)) clamped to [lo, hi]), or (None, None) when it failed."""
+    out, proc = run_scene_captured(scene, folder, "-quiet", "1", *args)
+    if proc.returncode != 0:
+        check(False, f"{scene} {' '.join(args)} exit {proc.returncode} {proc.stdout[-300:]}")
+        return None, None
+    s = summary_of(out)
+    b = s["balance"]
+    wanted = math.ceil(n0 * (b["pilot_mesh_error_estimate_transient"] / b["pilot_time_error_estimate_transient"])
+                       ** (1 / b["pilot_mesh_estimate_order"]))
+    return s, max(lo, min(hi, wanted))
+
+
 def axisymmetric(data):
     """-meshestimate 1 -meshlevels 3 and -balance 1 on sleeve-axisymmetric (see the docstring)."""
     ref, pr = run_scene_captured("sleeve-axisymmetric", "mesh-estimate-axisymmetric-nr16", "-quiet", "1", "-nr", "16")
@@ -94,16 +108,11 @@ def axisymmetric(data):
     check(0.5 <= window <= 2 and 0.5 <= transient <= 2,
           f"sleeve-axisymmetric -nr 4: effectivity against -nr 16 {window:.2f} over the window, {transient:.2f} over the "
           "transient, in [0.5, 2]")
-    out, proc = run_scene_captured("sleeve-axisymmetric", "mesh-estimate-axisymmetric-balance", "-quiet", "1", "-nr", "4",
-                                   "-balance", "1", "-meshlevels", "3", "-tol", "3e-3")
-    if proc.returncode != 0:
-        check(False, f"sleeve-axisymmetric -balance 1 exit {proc.returncode} {proc.stdout[-300:]}")
+    s, n = balanced("sleeve-axisymmetric", "mesh-estimate-axisymmetric-balance", 4, 2, 2000, "-nr", "4", "-balance", "1",
+                    "-meshlevels", "3", "-tol", "3e-3")
+    if s is None:
         return
-    s = summary_of(out)
-    b = s["balance"]
-    n = max(2, min(2000, math.ceil(4 * (b["pilot_mesh_error_estimate_transient"] / b["pilot_time_error_estimate_transient"])
-                                   ** (1 / b["pilot_mesh_estimate_order"]))))
-    p = s["parameters"]
+    b, p = s["balance"], s["parameters"]
     check(b["layers"] == n and p["nr"] == n and p["nz"] == 5 * n and s["mesh_estimate_layers"] == n,
           f"sleeve-axisymmetric -balance 1 from -nr 4 (order {b['pilot_mesh_estimate_order']:.2f}, time "
           f"{b['pilot_time_error_estimate_transient']:.2e}, mesh {b['pilot_mesh_error_estimate_transient']:.2e}): -nr {p['nr']}, "
@@ -134,16 +143,11 @@ def both_directions(data):
     check(0.25 < k < 4 and worst < 1e-9, f"-meshlevels 3: the differences shrink by {ratio:.3f} (18, 9, 4): order {k:.3f}; "
           f"the estimates (transient {100 * s['mesh_error_estimate_transient']:.3f} %) are the two histories' L1 difference "
           f"over (2^k - 1), to {worst:.1e}")
-    out, proc = run_scene_captured("sleeve-elliptic", "mesh-estimate-elliptic-balance", "-quiet", "1", "-vtkevery", "0",
-                                   "-mesh", "meshes/sleeve-aniso.msh", "-balance", "2", "-meshlevels", "3")
-    if proc.returncode != 0:
-        check(False, f"sleeve-elliptic -balance 2 -meshlevels 3 exit {proc.returncode} {proc.stdout[-300:]}")
+    s, layers = balanced("sleeve-elliptic", "mesh-estimate-elliptic-balance", 18, 4, 400, "-vtkevery", "0", "-mesh",
+                         "meshes/sleeve-aniso.msh", "-balance", "2", "-meshlevels", "3")
+    if s is None:
         return
-    s = summary_of(out)
     b = s["balance"]
-    wanted = math.ceil(18 * (b["pilot_mesh_error_estimate_transient"] / b["pilot_time_error_estimate_transient"])
-                       ** (1 / b["pilot_mesh_estimate_order"]))
-    layers = max(4, min(400, wanted))
     data["elliptic_balance"] = {**b, "nodes": s["nodes"], "mesh_error_estimate_transient": s["mesh_error_estimate_transient"],
                                 "time_error_estimate_transient": s["time_error_estimate_transient"]}
     check(abs(b["pilot_mesh_estimate_order"] / k - 1) < 1e-9 and b["layers"] == layers and b["arcs"] == layers

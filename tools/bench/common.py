@@ -70,6 +70,19 @@ def run(script, out, *args, allow_failure=False, result="summary.json", env=None
     return wall, summary, ""
 
 
+def time_goals(rows, paper, target, seconds, loose, share):
+    """A work-precision section's two goals (issue 48): the quickest of rows within `target` over the
+    reversion window (l1_reversion) in at most `seconds` of whole process (process_seconds), and the
+    quickest within `loose` in at most `share` of the fixed steps' run `paper`. Returns their records."""
+    best = min((r for r in rows if r["l1_reversion"] <= target), key=lambda r: r["process_seconds"], default=None)
+    fast = min((r for r in rows if r["l1_reversion"] <= loose), key=lambda r: r["process_seconds"], default=None)
+    return ({"target": target, "seconds": seconds, "best": best,
+             "met": best is not None and best["process_seconds"] <= seconds},
+            {"target": loose, "share": share, "best": fast,
+             "share_measured": fast["process_seconds"] / paper["process_seconds"] if fast else None,
+             "met": fast is not None and fast["process_seconds"] <= share * paper["process_seconds"]})
+
+
 def machine():
     model = "unknown"
     try:

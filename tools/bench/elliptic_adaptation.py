@@ -36,7 +36,7 @@ import statistics
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import OUT, ROOT, machine, run, write_json, write_whole  # noqa: E402
+from common import OUT, ROOT, machine, run, time_goals, write_json, write_whole  # noqa: E402
 from markdown_wrap import wrap  # noqa: E402
 from curve_error import curve_error  # noqa: E402
 import elliptic_mesh_study  # noqa: E402
@@ -111,17 +111,10 @@ def measure(results=None, repeat=3, quick=False):
         estimates = [dict(run_case(scene, f"estimate-nr{n}", ["-mesh", mesh(n), "-tol", 1e-3, "-meshestimate", 2,
                                                               "-meshlevels", 3], 1, ref), n=n)
                      for n in (ESTIMATED[:1] if quick else ESTIMATED)]
-        every = rows + [balance]
         seconds = CIRCULAR_SECONDS / circular["process_seconds"] * paper["process_seconds"]
-        best = min((r for r in every if r["l1_reversion"] <= TARGET), key=lambda r: r["process_seconds"], default=None)
-        loose = min((r for r in every if r["l1_reversion"] <= LOOSE), key=lambda r: r["process_seconds"], default=None)
-        record["scenes"][scene] = {
-            "paper_steps": paper, "rows": rows, "balance": balance, "estimates": estimates, "reference_figures": ref_figures,
-            "goal_tight": {"target": TARGET, "seconds": seconds, "best": best,
-                           "met": best is not None and best["process_seconds"] <= seconds},
-            "goal_loose": {"target": LOOSE, "share": LOOSE_SHARE, "best": loose,
-                           "share_measured": loose["process_seconds"] / paper["process_seconds"] if loose else None,
-                           "met": loose is not None and loose["process_seconds"] <= LOOSE_SHARE * paper["process_seconds"]}}
+        tight, loose = time_goals(rows + [balance], paper, TARGET, seconds, LOOSE, LOOSE_SHARE)
+        record["scenes"][scene] = {"paper_steps": paper, "rows": rows, "balance": balance, "estimates": estimates,
+                                   "reference_figures": ref_figures, "goal_tight": tight, "goal_loose": loose}
     if results is not None:
         results["elliptic_adaptation"] = record
     write_json(os.path.join(OUT, "elliptic-adaptation.json"), record)

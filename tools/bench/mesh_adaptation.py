@@ -30,7 +30,7 @@ import statistics
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import OUT, ROOT, machine, run, save, write_json, write_whole  # noqa: E402
+from common import OUT, ROOT, machine, run, save, time_goals, write_json, write_whole  # noqa: E402
 from markdown_wrap import wrap  # noqa: E402
 from curve_error import curve_error  # noqa: E402
 import mesh_study  # noqa: E402
@@ -115,16 +115,10 @@ def measure(results=None, repeat=3, quick=False):
     balance.update({"layers": b["layers_chosen"], "pilot": b["balance"],
                     "mesh_error_estimate_transient": b["mesh_error_estimate_transient"],
                     "time_error_estimate_transient": b["time_error_estimate_transient"]})
-    every = series["fixed"] + series["moving"] + [default]
-    best = min((r for r in every if r["l1_reversion"] <= TARGET), key=lambda r: r["process_seconds"], default=None)
-    loose = min((r for r in every if r["l1_reversion"] <= LOOSE), key=lambda r: r["process_seconds"], default=None)
+    tight, loose = time_goals(series["fixed"] + series["moving"] + [default], paper, TARGET, TARGET_SECONDS, LOOSE, LOOSE_SHARE)
     record = {"machine": machine(), "repeat": repeat, "tol": TOL, "quick": quick, "nt": NT, "series": series, "default": default,
               "paper_steps": paper, "orders": orders, "estimates": estimates, "balance": balance,
-              "goal_tight": {"target": TARGET, "seconds": TARGET_SECONDS, "best": best,
-                             "met": best is not None and best["process_seconds"] <= TARGET_SECONDS},
-              "goal_loose": {"target": LOOSE, "share": LOOSE_SHARE, "best": loose,
-                             "share_measured": loose["process_seconds"] / paper["process_seconds"] if loose else None,
-                             "met": loose is not None and loose["process_seconds"] <= LOOSE_SHARE * paper["process_seconds"]}}
+              "goal_tight": tight, "goal_loose": loose}
     if results is not None:
         results["mesh_adaptation"] = record
     write_json(os.path.join(OUT, "mesh-adaptation.json"), record)
