@@ -41,6 +41,7 @@ from markdown_wrap import wrap  # noqa: E402
 from curve_error import curve_error  # noqa: E402
 import elliptic_mesh_study  # noqa: E402
 import mesh_study  # noqa: E402
+from mesh_adaptation import pct  # noqa: E402
 
 DOC = os.path.join(ROOT, "docs", "benchmarks", "elliptic-adaptation.md")
 SCENES = ["sleeve-elliptic", "sleeve-elliptic-friction"]
@@ -119,10 +120,6 @@ def measure(results=None, repeat=3, quick=False):
         results["elliptic_adaptation"] = record
     write_json(os.path.join(OUT, "elliptic-adaptation.json"), record)
     return record
-
-
-def pct(x):
-    return f"{100 * x:.3f} %"
 
 
 def goal_rows(record):
