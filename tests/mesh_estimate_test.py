@@ -27,7 +27,8 @@ sleeve-radial at nr 40 (against their companions on 9 layers, 20 elements):
     estimates use it, all recomputed here from the three histories to 1e-9; -balance 2 -meshlevels 3
     takes ceil(18 (mesh / time)^(1 / k)) layers and as many arc segments, and reports its own
     estimate in both directions; -meshestimate 3, -meshlevels 4, -balance 2 with -arcs, and
-    sleeve-radial's -balance 2 refused;
+    sleeve-radial's -balance 2 refused; a remade ring of slivers (-layers 2000 -arcs 1) or of more
+    than 2e6 cells refused as a generated mesh is, its scratch folder of /tmp removed at exit;
   - sleeve-axisymmetric (the (r, z) mesh, -nr and its square cells halved together) at -nr 4,
     -meshestimate 1 -meshlevels 3 (companions at 2 and 1): the estimates and the order recomputed
     from the three histories, and its effectivity against the -nr 16 run (whose own error is about a
@@ -249,6 +250,15 @@ def main():
               f"{' '.join(args)}: exit {proc.returncode}, {message[-1] if message else '(no error line)'}")
     both_directions(data)
     axisymmetric(data)
+    # a ring of slivers or of too many cells is refused (after the scratch folder was made: none is left)
+    before = {n for n in os.listdir("/tmp") if n.startswith("sma-sleeve-")}
+    for args, word in ((["-layers", "2000", "-arcs", "1"], "quality"), (["-layers", "1500", "-arcs", "1500"], "cells")):
+        _, proc = run_scene_captured("sleeve-elliptic", "mesh-estimate-refused", "-quiet", "1", *args)
+        message = [l for l in (proc.stdout + proc.stderr).splitlines() if l.startswith("error:")]
+        left = {n for n in os.listdir("/tmp") if n.startswith("sma-sleeve-")} - before
+        check(proc.returncode == 1 and message and word in message[-1] and not left,
+              f"sleeve-elliptic {' '.join(args)}: exit {proc.returncode}, scratch folders left {sorted(left) or 'none'}, "
+              f"{message[-1][:160] if message else '(no error line)'}")
     for scene, args, word in (("sleeve-elliptic", ["-meshestimate", "3"], "-meshestimate 3"),
                               ("sleeve-elliptic", ["-meshlevels", "4"], "-meshlevels 4"),
                               ("sleeve-elliptic", ["-balance", "2", "-arcs", "18"], "-balance 2"),

@@ -104,7 +104,8 @@
 //   long RunCommand(string command)   /bin/sh -c command, waited for: its exit status (128 + the
 //       signal that ended it, -1 if it did not start); unlike exec() (system()), the caller keeps
 //       its INT and QUIT meanwhile (plugin/core/process.hpp)
-//   string TemporaryDirectory(string prefix)   a new empty /tmp/<prefix>XXXXXX ("" on failure)
+//   string TemporaryDirectory(string prefix)   a new empty /tmp/<prefix>XXXXXX ("" on failure), removed
+//                                              with its contents when the process exits
 //   long PlaneStressAtCentroids(mesh Th, matrix Dx, matrix Dy, real[] u, real[] [lambda, mu],
 //                               real[] sxx, real[] syy, real[] sxy)   the P0 interpolations of
 //       SigmaXX, SigmaYY, SigmaXY (edp/lib/elasticity.idp) of the [P1, P1] array u, to the last bit

@@ -3,6 +3,8 @@
 // in load.cpp.
 #include "glue/glue.hpp"
 
+#include <filesystem>
+
 #include "core/contact_history.hpp"
 #include "core/files.hpp"
 #include "core/json.hpp"
@@ -261,8 +263,25 @@ long ProbeRowWrite(std::ostream* const& f, KN<double>* const& head, KN<double>* 
 string* JsonQuote(Stack stack, string* const& text) { return NewString(stack, sma::json::quote(*text)); }
 string* ShellQuote(Stack stack, string* const& text) { return NewString(stack, sma::files::shell_quote(*text)); }
 long RunCommand(string* const& command) { return sma::process::run_shell(*command); }
+// The scratch folders this process made: removed at exit with what they hold, however the script
+// ends (a refusal's exit(1) after the folder was made left it in /tmp), as the claimed folders' locks.
+std::vector<std::string>& TemporaryFolders() {
+  static std::vector<std::string> folders;
+  return folders;
+}
+void RemoveTemporaryFolders() {
+  for (const auto& dir : TemporaryFolders()) {
+    std::error_code ignored;  // (already removed by the script: nothing to do)
+    std::filesystem::remove_all(dir, ignored);
+  }
+}
 string* TemporaryDirectory(Stack stack, string* const& prefix) {
-  return NewString(stack, sma::process::temporary_directory(*prefix));
+  std::string dir = sma::process::temporary_directory(*prefix);
+  if (!dir.empty()) {
+    if (TemporaryFolders().empty()) std::atexit(RemoveTemporaryFolders);
+    TemporaryFolders().push_back(dir);
+  }
+  return NewString(stack, dir);
 }
 
 }  // namespace
