@@ -4,9 +4,9 @@ does not outlive its run, even when the run is killed outright.
 
 In a private TMPDIR:
   - a run that ends normally leaves no folder;
-  - a tools/ff killed with SIGKILL while FreeFEM runs (no trap sees KILL: an MPI launcher's hard
-    stop of an ensemble's children did this, tests/signals_test.py's make ensemble cases left one a
-    run) leaves its folder, and the next run removes it: its owner, the pid written in it, is gone;
+  - a tools/ff killed with SIGKILL while FreeFEM runs (no trap sees KILL; tests/signals_test.py's
+    make ensemble cases left such a folder, one a run, its cause not traced) leaves its folder, and
+    the next run removes it: its owner, the pid written in it, is gone;
   - that next run keeps a folder whose owner is alive (a run in progress) and one without an owner
     (not a tools/ff folder of this version).
 Writes results/checks/ff_scratch.json.
