@@ -83,6 +83,19 @@ def time_goals(rows, paper, target, seconds, loose, share):
              "met": fast is not None and fast["process_seconds"] <= share * paper["process_seconds"]})
 
 
+def work_precision_main(doc, name, measure, write_doc):
+    """A work-precision section run alone (mesh_adaptation.py, elliptic_adaptation.py): --repeat, --quick,
+    or --page (the page again from results/bench/<name>.json)."""
+    import argparse
+    parser = argparse.ArgumentParser(description=doc.split("\n\n")[0])
+    parser.add_argument("--repeat", type=int, default=3)
+    parser.add_argument("--quick", action="store_true")
+    parser.add_argument("--page", action="store_true", help=f"the page again from results/bench/{name}.json")
+    opts = parser.parse_args()
+    write_doc(json.load(open(os.path.join(OUT, f"{name}.json"))) if opts.page
+              else measure(repeat=opts.repeat, quick=opts.quick))
+
+
 def machine():
     model = "unknown"
     try:

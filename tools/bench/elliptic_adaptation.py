@@ -28,7 +28,6 @@ process.
                                                                 docs/benchmarks/elliptic-adaptation.md
 Also make bench's section 11 (tools/bench/bench.py). About 3 minutes with the references made.
 """
-import argparse
 import json
 import os
 import resource
@@ -36,7 +35,7 @@ import statistics
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import OUT, ROOT, machine, run, time_goals, write_json, write_whole  # noqa: E402
+from common import OUT, ROOT, machine, run, time_goals, work_precision_main, write_json, write_whole  # noqa: E402
 from markdown_wrap import wrap  # noqa: E402
 from curve_error import curve_error  # noqa: E402
 import elliptic_mesh_study  # noqa: E402
@@ -184,16 +183,5 @@ def write_doc(record):
     write_whole(DOC, wrap("\n".join(lines)))
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--repeat", type=int, default=3)
-    parser.add_argument("--quick", action="store_true")
-    parser.add_argument("--page", action="store_true", help="the page again from results/bench/elliptic-adaptation.json")
-    opts = parser.parse_args()
-    record = json.load(open(os.path.join(OUT, "elliptic-adaptation.json"))) if opts.page else \
-        measure(repeat=opts.repeat, quick=opts.quick)
-    write_doc(record)
-
-
 if __name__ == "__main__":
-    main()
+    work_precision_main(__doc__, "elliptic-adaptation", measure, write_doc)

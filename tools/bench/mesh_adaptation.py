@@ -21,7 +21,6 @@ these configurations against the error measured, and the default's options with 
                                                   docs/benchmarks/mesh-adaptation.md, .png
 Also a section of make bench (tools/bench/bench.py). About 2 minutes with --repeat 3 on 2 cores.
 """
-import argparse
 import json
 import math
 import os
@@ -30,7 +29,7 @@ import statistics
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import OUT, ROOT, machine, run, save, time_goals, write_json, write_whole  # noqa: E402
+from common import OUT, ROOT, machine, run, save, time_goals, work_precision_main, write_json, write_whole  # noqa: E402
 from markdown_wrap import wrap  # noqa: E402
 from curve_error import curve_error  # noqa: E402
 import mesh_study  # noqa: E402
@@ -220,18 +219,5 @@ def write_doc(record, plt=None):
     write_whole(DOC, wrap("\n".join(lines)))
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--repeat", type=int, default=3)
-    parser.add_argument("--quick", action="store_true")
-    parser.add_argument("--page", action="store_true", help="the page again from results/bench/mesh-adaptation.json")
-    opts = parser.parse_args()
-    if opts.page:
-        record = json.load(open(os.path.join(OUT, "mesh-adaptation.json")))
-    else:
-        record = measure(repeat=opts.repeat, quick=opts.quick)
-    write_doc(record)
-
-
 if __name__ == "__main__":
-    main()
+    work_precision_main(__doc__, "mesh-adaptation", measure, write_doc)
