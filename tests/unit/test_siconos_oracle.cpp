@@ -8,7 +8,10 @@
 //     PsorCondensed calls it, until max |g_new - g| <= tol max |g_new|), written out here as a
 //     test-local loop, against Siconos' 2D frictional-contact nonsmooth Gauss-Seidel
 //     (fc2d_nsgs_dense), which solves the Coulomb law directly, contact by contact, with no
-//     threshold fixed point. (Debian's Siconos 4.4
+//     threshold fixed point;
+//   the 3D cone (mu, two tangential components per contact: plugin/core/psor_cone.hpp): the same
+//     fixed point around psor_cone against Siconos' 3D nonsmooth Gauss-Seidel (fc3d_nsgs), whose
+//     local solver projects on the cone itself. (Debian's Siconos 4.4
 //     fc2d_lexicolemke and fc2d_enum, which go through fc2d_tolcp, return answers that violate the
 //     Coulomb law by 1e-2 relative as soon as there are two contacts: not usable as an oracle.)
 // Siconos' convention is velocity = M r + q_s; ours is w = W r - q, so q_s = -q.
@@ -23,6 +26,7 @@
 #include <string>
 
 #include "core/psor.hpp"
+#include "core/psor_cone.hpp"
 #include "random_problems.hpp"
 
 extern "C" {
@@ -33,6 +37,7 @@ extern "C" {
 #include <Relay_Solvers.h>
 #include <SolverOptions.h>
 #include <fc2d_Solvers.h>
+#include <fc3d_Solvers.h>
 #include <relay_cst.h>
 }
 
@@ -254,5 +259,73 @@ TEST(SiconosOracle, CoulombSceneDefaultsNearFc2dNsgs) {
   write_figures("siconos_coulomb_scene_defaults",
                 "scenes' slip-threshold fixed point around psor_condensed at the scenes' defaults "
                 "(PSOR [1.88, 1e-10, 100000, 10], slip tol 1e-9) against Siconos fc2d_nsgs_dense",
+                figures);
+}
+
+namespace {
+
+Eigen::VectorXd siconos_coulomb_3d(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, const Eigen::VectorXd& mu) {
+  const int n = (int)q.size();
+  Eigen::VectorXd qs = -q, muv = mu, r = Eigen::VectorXd::Zero(n), v(n);
+  FrictionContactProblem problem;
+  problem.dimension = 3;
+  problem.numberOfContacts = n / 3;
+  problem.M = dense(W);
+  problem.q = qs.data();
+  problem.mu = muv.data();
+  SolverOptions* options = solver_options_create(SICONOS_FRICTION_3D_NSGS);
+  options->dparam[SICONOS_DPARAM_TOL] = 1e-15;
+  options->iparam[SICONOS_IPARAM_MAX_ITER] = 1000000;
+  int info = -1;
+  fc3d_nsgs(&problem, r.data(), v.data(), &info, options);
+  solver_options_delete(options);
+  NM_free(problem.M);
+  EXPECT_EQ(info, 0) << "Siconos fc3d_nsgs failed";
+  return r;
+}
+
+}  // namespace
+
+// The 3D cone on 60 random problems, mostly in contact: the slip-threshold fixed point around
+// psor_cone (omega 1.3, PSOR tol 1e-15, slip tol 1e-13) against fc3d_nsgs (tol 1e-15); Siconos'
+// answer must satisfy the laws itself (natural-map residual with g = mu r_n), and ours too.
+TEST(SiconosOracle, ConeFixedPointEqualsFc3dNsgs) {
+  Figures figures;
+  std::mt19937 rng(49);
+  for (int trial = 0; trial < 60; ++trial) {
+    const int m = 1 + trial % 5;
+    Eigen::MatrixXd W = sma_test::random_spd(3 * m, rng) / (3.0 * m);
+    std::normal_distribution<double> normal;
+    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    Eigen::VectorXd q(3 * m), mu(m);
+    for (int k = 0; k < 3 * m; ++k) q[k] = normal(rng);
+    for (int i = 0; i < m; ++i) q[3 * i] = std::fabs(q[3 * i]) + 0.2, mu[i] = uniform(rng);
+    Eigen::VectorXd r = Eigen::VectorXd::Zero(3 * m);
+    const sma::ConeFixedPointResult res = sma::coulomb_cone_fixed_point(W, q, mu, 1.3, 1e-15, 200000, 1e-13, 500, r);
+    ASSERT_TRUE(res.converged) << "trial " << trial;
+    figures.fixed_point_iterations_max = std::max(figures.fixed_point_iterations_max, res.iterations);
+    const Eigen::VectorXd ref = siconos_coulomb_3d(W, q, mu);
+    Eigen::VectorXd gref(m), gour(m);
+    for (int i = 0; i < m; ++i) gref[i] = mu[i] * ref[3 * i], gour[i] = mu[i] * r[3 * i];
+    EXPECT_LE(sma::cone_law_residual(W, q, gref, ref), 1e-10) << "trial " << trial;
+    const double law = sma::cone_law_residual(W, q, gour, r);
+    figures.law_residual_max = std::max(figures.law_residual_max, law);
+    EXPECT_LE(law, 1e-10) << "trial " << trial;
+    const double scale = std::max(ref.lpNorm<Eigen::Infinity>(), 1e-12);
+    figures.worst = std::max(figures.worst, (r - ref).lpNorm<Eigen::Infinity>() / scale);
+    figures.cases++;
+    for (int i = 0; i < m; ++i) {
+      const double rt = std::hypot(r[3 * i + 1], r[3 * i + 2]);
+      if (r[3 * i] <= 1e-12) figures.separated++;
+      else if (rt >= gour[i] * (1 - 1e-9)) figures.sliding++;
+      else figures.sticking++;
+    }
+  }
+  EXPECT_LE(figures.worst, 1e-8);
+  EXPECT_GT(figures.sliding, 5);
+  EXPECT_GT(figures.sticking, 5);
+  write_figures("siconos_cone_3d",
+                "slip-threshold fixed point around psor_cone (omega 1.3, PSOR tol 1e-15, slip tol 1e-13) against "
+                "Siconos fc3d_nsgs (tol 1e-15), the 3D Coulomb cone",
                 figures);
 }

@@ -1,0 +1,198 @@
+// Projected SOR on a condensed 3D contact problem: Signorini and a Tresca disk, the two tangential
+// components of a 3D contact together (issue 49; psor.hpp is the 2D problem: one tangential
+// component, a Tresca interval). With the slip-threshold fixed point g = mu r_n around it
+// (coulomb_cone_fixed_point) it solves the Coulomb cone, as the scenes' loops do in 2D.
+//
+// Unknowns: per contact node i, r = (r_n, r_t1, r_t2), stored interleaved (3 per node; t1, t2 any
+// orthonormal pair of the tangent plane). With the Delassus operator W = H K^-1 H' (3m x 3m,
+// symmetric positive definite, or with the rows and columns of blocked tangential motions zero)
+// and q the free motion, the local motions are w = W r - q and the laws are
+//   Signorini:    r_n >= 0, w_n >= 0, r_n w_n = 0
+//   Tresca disk:  |r_t| <= g_i;  |r_t| < g_i => w_t = 0 (stick);  |r_t| = g_i => w_t = -k r_t,
+//                 k >= 0 (the slip opposes the reaction); i.e. r_t = proj_disk(g)(r_t - rho w_t)
+//                 for any rho > 0.
+// A sweep takes each node in turn (block Gauss-Seidel, as LMGC90's and Siconos' nonsmooth
+// Gauss-Seidel): the normal component as psor.hpp's, r_n <- max(0, r_n - omega w_n / W_nn); then
+// the tangential pair by the exact solution of its local problem (the 2 x 2 block A of W, the
+// others fixed: min 1/2 x'A x - b'x over the disk |x| <= g, tresca_disk_local), relaxed by omega
+// and projected back on the disk. The disk couples the two components: two scalar clamps in turn
+// (psor.hpp's update per component) would bound each, not |r_t|.
+#pragma once
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "psor.hpp"
+
+namespace sma {
+
+// The point of the disk |x| <= radius nearest to x.
+inline Eigen::Vector2d project_disk(const Eigen::Vector2d& x, double radius) {
+  const double norm = x.norm();
+  return norm <= radius ? x : Eigen::Vector2d(x * (radius / norm));
+}
+
+// min 1/2 x'A x - b'x over |x| <= g, A symmetric positive definite (2 x 2), g >= 0. Inside: A x = b.
+// On the circle (the unconstrained minimum outside it): x = (A + lambda I)^-1 b with the lambda > 0
+// that puts it on the circle, the root of phi(lambda) = 1 / |x(lambda)| - 1 / g (the trust-region
+// subproblem's secular equation, which Newton's method solves monotonically from the left: phi is
+// concave and increasing; More and Sorensen), in A's eigenbasis, kept in the bracket
+// [0, |b| / g] where phi changes sign.
+inline Eigen::Vector2d tresca_disk_local(const Eigen::Matrix2d& A, const Eigen::Vector2d& b, double g) {
+  if (!(g > 0.0)) return Eigen::Vector2d::Zero();
+  const Eigen::Vector2d inside = A.ldlt().solve(b);
+  if (inside.norm() <= g) return inside;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(A);
+  const Eigen::Vector2d d = eigen.eigenvalues(), c = eigen.eigenvectors().transpose() * b;
+  double low = 0.0, high = b.norm() / g, lambda = 0.0;
+  for (int it = 0; it < 100; ++it) {
+    const double s0 = c[0] / (d[0] + lambda), s1 = c[1] / (d[1] + lambda);
+    const double norm = std::hypot(s0, s1);
+    const double phi = 1.0 / norm - 1.0 / g;
+    if (phi < 0) low = lambda; else high = lambda;
+    // d|x|/dlambda = -(s0^2 / (d0 + lambda) + s1^2 / (d1 + lambda)) / |x|; phi' = -|x|' / |x|^2
+    const double slope = (s0 * s0 / (d[0] + lambda) + s1 * s1 / (d[1] + lambda)) / (norm * norm * norm);
+    double next = lambda - phi / slope;
+    if (!(next > low && next < high)) next = 0.5 * (low + high);  // a Newton step out of the bracket: bisect
+    if (std::fabs(next - lambda) <= 1e-15 * std::max(next, 1e-300) || high - low <= 1e-15 * high) {
+      lambda = next;
+      break;
+    }
+    lambda = next;
+  }
+  const Eigen::Vector2d x = eigen.eigenvectors() *
+                            Eigen::Vector2d(c[0] / (d[0] + lambda), c[1] / (d[1] + lambda));
+  return project_disk(x, g);  // on the circle to round-off; never outside it
+}
+
+// The natural-map residual of the 3D laws: 0 exactly at a solution, scale-free (max over the
+// components of |F(r) - r| over max |r|, F the laws' projections with rho = 1 / W_nn for the normal
+// and 1 / max(W_t1t1, W_t2t2) for the tangential pair).
+inline double cone_law_residual(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, const Eigen::VectorXd& g,
+                                const Eigen::VectorXd& r) {
+  const Eigen::VectorXd w = W * r - q;
+  double worst = 0.0, scale = 0.0;
+  for (Eigen::Index i = 0; i < g.size(); ++i) {
+    const Eigen::Index n = 3 * i;
+    const double rn = std::max(0.0, r[n] - w[n] / W(n, n));
+    const double wtt = std::max(W(n + 1, n + 1), W(n + 2, n + 2));
+    const Eigen::Vector2d rt(r[n + 1], r[n + 2]);
+    const Eigen::Vector2d mapped =
+        wtt == 0.0 ? Eigen::Vector2d::Zero() : project_disk(rt - Eigen::Vector2d(w[n + 1], w[n + 2]) / wtt, g[i]);
+    worst = std::max({worst, std::fabs(rn - r[n]), (mapped - rt).lpNorm<Eigen::Infinity>()});
+    scale = std::max({scale, std::fabs(r[n]), rt.lpNorm<Eigen::Infinity>()});
+  }
+  return scale > 0 ? worst / scale : worst;
+}
+
+// Sweeps from the given r (a warm start) until the relative change of r over a sweep is <= tol
+// (measured per unit relaxation, as psor_condensed's) or maxit sweeps. Throws on inconsistent
+// input; the caller reads `converged`, `iterations` and `residual`.
+inline PsorResult psor_cone(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, const Eigen::VectorXd& g,
+                            double omega, double tol, int maxit, Eigen::VectorXd& r) {
+  const Eigen::Index m = g.size();
+  if (W.rows() != 3 * m || W.cols() != 3 * m || q.size() != 3 * m || r.size() != 3 * m)
+    throw std::invalid_argument("psor_cone: W must be 3m x 3m and q, r of length 3m for m = " + std::to_string(m) +
+                                " contact nodes");
+  if (!(omega > 0.0 && omega < 2.0))
+    throw std::invalid_argument("psor_cone: relaxation omega = " + psor_detail::number(omega) + " must be in (0, 2)");
+  if (!(tol >= 0.0)) throw std::invalid_argument("psor_cone: tolerance must be >= 0");
+  for (Eigen::Index i = 0; i < m; ++i) {
+    const Eigen::Index n = 3 * i;
+    if (!(g[i] >= 0.0))
+      throw std::invalid_argument("psor_cone: slip threshold g = " + psor_detail::number(g[i]) + " < 0 at contact node " +
+                                  std::to_string(i));
+    if (!(W(n, n) > 0.0))
+      throw std::invalid_argument("psor_cone: Delassus normal diagonal not positive at contact node " + std::to_string(i) +
+                                  " (is its normal motion blocked by a support?)");
+    // A support may block the tangential motion (a node on a symmetry plane): then its threshold
+    // must be 0 and the pair stays 0. A pair with one blocked component is refused: the disk
+    // would turn into a segment the sweep does not model.
+    const bool blocked = W(n + 1, n + 1) == 0.0 || W(n + 2, n + 2) == 0.0;
+    if (blocked && g[i] != 0.0)
+      throw std::invalid_argument("psor_cone: a blocked tangential motion (Delassus tangential diagonal 0) at contact "
+                                  "node " + std::to_string(i) + " with slip threshold " + psor_detail::number(g[i]) +
+                                  " (needs threshold 0)");
+    if (!blocked && !(W.block<2, 2>(n + 1, n + 1).determinant() > 0.0))
+      throw std::invalid_argument("psor_cone: the tangential 2 x 2 block of the Delassus operator is not positive "
+                                  "definite at contact node " + std::to_string(i));
+  }
+  PsorResult result;
+  Eigen::VectorXd w = W * r - q;  // kept up to date column by column
+  while (result.iterations < maxit) {
+    ++result.iterations;
+    double change = 0.0, size = 0.0;
+    for (Eigen::Index i = 0; i < m; ++i) {
+      const Eigen::Index n = 3 * i;
+      const double oldN = r[n];
+      const double newN = std::max(0.0, oldN - omega * w[n] / W(n, n));
+      if (newN != oldN) {
+        r[n] = newN;
+        w += W.col(n) * (newN - oldN);
+      }
+      change = std::max(change, std::fabs(newN - oldN));
+      size = std::max(size, newN);
+      if (g[i] == 0.0 && r[n + 1] == 0.0 && r[n + 2] == 0.0) continue;  // frictionless or blocked: r_t stays 0
+      const Eigen::Vector2d oldT(r[n + 1], r[n + 2]);
+      const Eigen::Matrix2d A = W.block<2, 2>(n + 1, n + 1);
+      // the pair's local problem with the others fixed: w_t(x) = A (x - oldT) + w_t
+      const Eigen::Vector2d b = A * oldT - Eigen::Vector2d(w[n + 1], w[n + 2]);
+      const Eigen::Vector2d exact = tresca_disk_local(A, b, g[i]);
+      const Eigen::Vector2d newT = project_disk(oldT + omega * (exact - oldT), g[i]);
+      const Eigen::Vector2d delta = newT - oldT;
+      if (delta[0] != 0.0 || delta[1] != 0.0) {
+        r[n + 1] = newT[0];
+        r[n + 2] = newT[1];
+        w += W.col(n + 1) * delta[0] + W.col(n + 2) * delta[1];
+      }
+      change = std::max(change, delta.lpNorm<Eigen::Infinity>());
+      size = std::max(size, newT.lpNorm<Eigen::Infinity>());
+    }
+    result.residual = (size > 0 ? change / size : change) / std::min(omega, 1.0);
+    if (result.residual <= tol) {
+      result.converged = true;
+      break;
+    }
+  }
+  return result;
+}
+
+struct ConeFixedPointResult {
+  int iterations = 0, sweeps = 0;  // fixed-point iterations; PSOR sweeps in all
+  double change = 0.0;             // the last relative change of the thresholds
+  bool converged = false;
+};
+
+// Coulomb's cone |r_t| <= mu_i r_n by the scenes' slip-threshold fixed point (contact.idp
+// ElasticContactSolve, in 3D): g = mu max(0, r_n) of the previous iterate, a warm-started Tresca
+// solve (psor_cone), until max |g_new - g| <= slip_tol max |g_new|. Nodes with blocked tangential
+// motion take mu = 0 (the caller passes 0 there).
+inline ConeFixedPointResult coulomb_cone_fixed_point(const Eigen::MatrixXd& W, const Eigen::VectorXd& q,
+                                                     const Eigen::VectorXd& mu, double omega, double tol, int maxit,
+                                                     double slip_tol, int slip_maxit, Eigen::VectorXd& r) {
+  const Eigen::Index m = mu.size();
+  if (r.size() != 3 * m) throw std::invalid_argument("coulomb_cone_fixed_point: r must have 3 entries per node");
+  Eigen::VectorXd g(m), g_new(m);
+  for (Eigen::Index i = 0; i < m; ++i) g[i] = mu[i] * std::max(0.0, r[3 * i]);
+  ConeFixedPointResult result;
+  while (result.iterations < slip_maxit) {
+    ++result.iterations;
+    const PsorResult sweeps = psor_cone(W, q, g, omega, tol, maxit, r);
+    result.sweeps += sweeps.iterations;
+    if (!sweeps.converged) return result;
+    for (Eigen::Index i = 0; i < m; ++i) g_new[i] = mu[i] * std::max(0.0, r[3 * i]);
+    const double size = std::max(0.0, g_new.maxCoeff());
+    result.change = (g_new - g).lpNorm<Eigen::Infinity>() / (size > 0 ? size : 1.0);
+    g = g_new;
+    if (result.change <= slip_tol) {
+      result.converged = true;
+      break;
+    }
+  }
+  return result;
+}
+
+}  // namespace sma
