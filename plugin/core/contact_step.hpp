@@ -17,6 +17,7 @@
 #include <string>
 
 #include "psor.hpp"
+#include "psor_cone.hpp"
 #include "sparse_spd.hpp"
 #include "span.hpp"
 
@@ -116,6 +117,38 @@ inline PsorResult condensed_global_step(const SpdFactor& k, const DelassusFactor
   const Eigen::VectorXd q = contact_free_motion(d, contact_motion(d, z), gap, slip_reference, tangent_free);
   const Eigen::VectorXd g = Eigen::Map<const Eigen::VectorXd>(threshold.begin(), m);
   const PsorResult res = psor_condensed(d.w, q, g, settings.omega, settings.tol, settings.maxit, r, settings.polish);
+  add_contact_load(d, r, z);
+  k.backward(z, u);
+  return res;
+}
+
+// The 3D contact step (psor_cone.hpp): three rows per node (n, t1, t2) in d, its Delassus operator
+// formed on all of them; per node i: gap[i], threshold[i] (the Tresca disk's radius),
+// slip_reference[2i], [2i + 1] (t1.u and t2.u at the stage's start). The free motion
+// q = (-(n.u_free + gap), -(t1.u_free - ref1), -(t2.u_free - ref2)), a tangential row whose motion
+// a support blocks (its Delassus diagonal 0) taking q = 0; then the sweeps, and u as
+// condensed_global_step's: one forward and one backward solve.
+inline PsorResult condensed_cone_step(const SpdFactor& k, const DelassusFactor& d, span<const double> rhs,
+                                      span<const double> gap, span<const double> threshold,
+                                      span<const double> slip_reference, const ContactStepSettings& settings,
+                                      Eigen::VectorXd& r, span<double> u) {
+  const Eigen::Index m = (Eigen::Index)gap.size(), n = k.size();
+  if (d.w.rows() != 3 * m || d.y.rows() != n || (Eigen::Index)d.rows.size() != 3 * m)
+    throw std::invalid_argument("the cone's contact problem has " + std::to_string(d.w.rows()) + " rows (all formed: " +
+                                std::to_string(d.rows.size()) + ") and " + std::to_string(d.y.rows()) + " dofs, the step " +
+                                std::to_string(m) + " nodes (3 rows each) and " + std::to_string(n) + " dofs");
+  if ((Eigen::Index)threshold.size() != m || (Eigen::Index)slip_reference.size() != 2 * m || r.size() != 3 * m)
+    throw std::invalid_argument("per-node data of unequal lengths (threshold m, slip reference 2m, r 3m)");
+  Eigen::VectorXd z = k.forward(rhs);
+  const Eigen::VectorXd hu = contact_motion(d, z);
+  Eigen::VectorXd q(3 * m);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    q[3 * i] = -(hu[3 * i] + gap[i]);
+    for (int c = 1; c <= 2; ++c)
+      q[3 * i + c] = d.w(3 * i + c, 3 * i + c) != 0.0 ? -(hu[3 * i + c] - slip_reference[2 * i + c - 1]) : 0.0;
+  }
+  const Eigen::VectorXd g = Eigen::Map<const Eigen::VectorXd>(threshold.begin(), m);
+  const PsorResult res = psor_cone(d.w, q, g, settings.omega, settings.tol, settings.maxit, r);
   add_contact_load(d, r, z);
   k.backward(z, u);
   return res;

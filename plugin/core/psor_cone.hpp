@@ -41,8 +41,15 @@ inline Eigen::Vector2d project_disk(const Eigen::Vector2d& x, double radius) {
 // subproblem's secular equation, which Newton's method solves monotonically from the left: phi is
 // concave and increasing; More and Sorensen), in A's eigenbasis, kept in the bracket
 // [0, |b| / g] where phi changes sign.
+// A blocked component (its diagonal 0, its row and column 0) stays 0, the other on [-g, g].
 inline Eigen::Vector2d tresca_disk_local(const Eigen::Matrix2d& A, const Eigen::Vector2d& b, double g) {
   if (!(g > 0.0)) return Eigen::Vector2d::Zero();
+  if (A(0, 0) == 0.0 || A(1, 1) == 0.0) {
+    Eigen::Vector2d x = Eigen::Vector2d::Zero();
+    for (int k = 0; k < 2; ++k)
+      if (A(k, k) != 0.0) x[k] = std::clamp(b[k] / A(k, k), -g, g);
+    return x;
+  }
   const Eigen::Vector2d inside = A.ldlt().solve(b);
   if (inside.norm() <= g) return inside;
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(A);
@@ -108,15 +115,16 @@ inline PsorResult psor_cone(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, 
     if (!(W(n, n) > 0.0))
       throw std::invalid_argument("psor_cone: Delassus normal diagonal not positive at contact node " + std::to_string(i) +
                                   " (is its normal motion blocked by a support?)");
-    // A support may block the tangential motion (a node on a symmetry plane): then its threshold
-    // must be 0 and the pair stays 0. A pair with one blocked component is refused: the disk
-    // would turn into a segment the sweep does not model.
-    const bool blocked = W(n + 1, n + 1) == 0.0 || W(n + 2, n + 2) == 0.0;
-    if (blocked && g[i] != 0.0)
-      throw std::invalid_argument("psor_cone: a blocked tangential motion (Delassus tangential diagonal 0) at contact "
-                                  "node " + std::to_string(i) + " with slip threshold " + psor_detail::number(g[i]) +
+    // A support may block a tangential motion (a node on a symmetry plane: its row and column of
+    // W are 0): its component stays 0, and the disk of the other is the segment [-g, g] (one
+    // blocked) or nothing (both blocked: the threshold must then be 0, as psor_condensed's).
+    const bool blocked1 = W(n + 1, n + 1) == 0.0, blocked2 = W(n + 2, n + 2) == 0.0;
+    if (blocked1 && blocked2 && g[i] != 0.0)
+      throw std::invalid_argument("psor_cone: both tangential motions blocked (Delassus tangential diagonals 0) at "
+                                  "contact node " + std::to_string(i) + " with slip threshold " + psor_detail::number(g[i]) +
                                   " (needs threshold 0)");
-    if (!blocked && !(W.block<2, 2>(n + 1, n + 1).determinant() > 0.0))
+    if (!(W(n + 1, n + 1) >= 0.0 && W(n + 2, n + 2) >= 0.0) ||
+        (!blocked1 && !blocked2 && !(W.block<2, 2>(n + 1, n + 1).determinant() > 0.0)))
       throw std::invalid_argument("psor_cone: the tangential 2 x 2 block of the Delassus operator is not positive "
                                   "definite at contact node " + std::to_string(i));
   }

@@ -52,6 +52,11 @@
 //       one condensed contact global step (plugin/core/contact_step.hpp): the free motion of the
 //       contact rows, the PSOR on W (r warm start in/out), u = K^-1 (rhs + S H' r), by one forward
 //       and one backward solve; returns the sweep count.
+//   long SpdConeStep(long handle, real[] rhs, real[int,int] table, real[] [omega, tol, maxit],
+//                    real[] r, real[] u, real[] info)
+//       the same for a 3D contact problem (three rows per node (n, t1, t2), SpdDelassus with
+//       normalOnly 0): table [gap, threshold g, t1.u, t2.u at the stage's start] per node, the
+//       Tresca disk |r_t| <= g by psor_cone (plugin/core/psor_cone.hpp); r = (r_n, r_t1, r_t2).
 //   long StepOperatorsSet(long handle, matrix B, matrix Q, matrix Interp)   keeps the fraction
 //       model's step operators (B: dofs x points, Q: heat nodes x points int s phi, Interp: points x
 //       heat nodes) in a slot (< 0: a new one); returns the slot.

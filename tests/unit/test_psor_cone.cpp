@@ -126,9 +126,12 @@ TEST(PsorCone, RandomProblemsSatisfyTheLaws) {
 
 // A 2D problem (n, t) embedded in 3D with a decoupled, unloaded second tangent (W_t2t2 = 1, no
 // coupling, q_t2 = 0): r_t2 = 0 and the rest is psor_condensed's answer.
+// The same with the second tangent blocked (its row and column 0, as a support makes them): the
+// disk is then the segment [-g, g] of the first.
 TEST(PsorCone, TwoDimensionalProblemEmbedded) {
   std::mt19937 rng(2026);
-  for (int trial = 0; trial < 40; ++trial) {
+  for (int trial = 0; trial < 80; ++trial) {
+    const bool blocked = trial >= 40;
     const int m = 1 + trial % 5;
     const sma_test::TrescaProblem p2 = sma_test::random_tresca(m, 0.5, true, rng);
     Eigen::MatrixXd W = Eigen::MatrixXd::Zero(3 * m, 3 * m);
@@ -137,7 +140,7 @@ TEST(PsorCone, TwoDimensionalProblemEmbedded) {
       for (int j = 0; j < m; ++j)
         for (int a = 0; a < 2; ++a)
           for (int b = 0; b < 2; ++b) W(3 * i + a, 3 * j + b) = p2.W(2 * i + a, 2 * j + b);
-      W(3 * i + 2, 3 * i + 2) = 1.0;
+      W(3 * i + 2, 3 * i + 2) = blocked ? 0.0 : 1.0;
       q[3 * i] = p2.q[2 * i];
       q[3 * i + 1] = p2.q[2 * i + 1];
     }
@@ -218,19 +221,18 @@ TEST(PsorCone, RefusesInconsistentInput) {
   p.g[1] = -1;
   EXPECT_THROW(sma::psor_cone(p.W, p.q, p.g, 1.0, 1e-10, 10, r), std::invalid_argument);
   p.g[1] = 0.3;
-  // a blocked tangential motion (row and column 0) with a positive threshold
-  p.W.row(4).setZero();
-  p.W.col(4).setZero();
+  // both tangential motions blocked (rows and columns 0) with a positive threshold
+  for (int k : {4, 5}) {
+    p.W.row(k).setZero();
+    p.W.col(k).setZero();
+  }
   try {
     sma::psor_cone(p.W, p.q, p.g, 1.0, 1e-10, 10, r);
-    ADD_FAILURE() << "a blocked tangent with g > 0 was accepted";
+    ADD_FAILURE() << "two blocked tangents with g > 0 were accepted";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("contact node 1"), std::string::npos) << e.what();
   }
   p.g[1] = 0.0;  // allowed with threshold 0: the pair stays 0
-  p.W(5, 5) = 0;
-  p.W.row(5).setZero();
-  p.W.col(5).setZero();
   EXPECT_TRUE(sma::psor_cone(p.W, p.q, p.g, 1.0, 1e-13, 100000, r).converged);
   EXPECT_EQ(r[4], 0.0);
   EXPECT_EQ(r[5], 0.0);

@@ -559,3 +559,88 @@ TEST(ContactStep, SecondDeformableBodyAddsItsCompliance) {
   EXPECT_THROW(sma::add_obstacle_compliance(bad, tangential), std::invalid_argument);
   EXPECT_EQ((bad.w - w1).norm(), 0.0);  // a refused compliance leaves W as it was
 }
+
+// The 3D contact step (condensed_cone_step): three rows per node (the node's dof pushed by the
+// obstacle, two neighbour dofs as the tangents), a load pressing every node onto the obstacle and
+// dragging the tangents: equilibrium K u = rhs + H' r, and every law on the motions H u (gap,
+// complementarity, the disk, stick and slip) with nodes sticking and sliding. With the second
+// tangent's dof held (free = 0: its Delassus row and column 0) the step is condensed_global_step's
+// on the first two rows, to round-off.
+TEST(ContactStep, ConeStepSatisfiesTheLaws) {
+  const SparseMatrix a = grid_laplacian(9, 9, 0.05);
+  const int n = a.rows(), m = 4;
+  const int nodes[m] = {12, 22, 40, 58};
+  std::vector<Eigen::Triplet<double, int>> t;
+  for (int i = 0; i < m; ++i) {
+    t.emplace_back(3 * i, nodes[i], 1.0);
+    t.emplace_back(3 * i + 1, nodes[i] + 1, 1.0);
+    t.emplace_back(3 * i + 2, nodes[i] + 9, 1.0);
+  }
+  SparseMatrix h(3 * m, n);
+  h.setFromTriplets(t.begin(), t.end());
+  sma::SpdFactor k;
+  k.factorize(a);
+  std::vector<double> free(n, 1.0);
+  const sma::DelassusFactor c = sma::delassus_factor(k, h, free, false);
+  std::vector<double> rhs(n, -1.0), gap = {0.5, 0.3, 0.5, 2.0}, threshold = {20.0, 0.4, 0.05, 10.0}, reference(2 * m, 0.0),
+      u(n);
+  for (int i = 0; i < m; ++i) rhs[nodes[i] + 1] += 3.0, rhs[nodes[i] + 9] -= 2.0;
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(3 * m);
+  sma::ContactStepSettings set;
+  set.tol = 1e-14;
+  set.omega = 1.2;
+  const sma::PsorResult res = sma::condensed_cone_step(k, c, rhs, gap, threshold, reference, set, r, u);
+  ASSERT_TRUE(res.converged);
+  const Eigen::Map<Eigen::VectorXd> uu(u.data(), n);
+  const Eigen::Map<Eigen::VectorXd> b(rhs.data(), n);
+  EXPECT_LT((a * uu - b - h.transpose() * r).norm() / b.norm(), 1e-12);
+  const Eigen::VectorXd hu = h * uu;
+  int sticking = 0, sliding = 0;
+  const double scale = 1 + r.lpNorm<Eigen::Infinity>();
+  for (int i = 0; i < m; ++i) {
+    const double normal_gap = hu[3 * i] + gap[i];
+    EXPECT_GE(r[3 * i], 0.0);
+    EXPECT_GE(normal_gap, -1e-9);
+    EXPECT_LT(std::fabs(r[3 * i] * normal_gap), 1e-9 * scale);
+    const Eigen::Vector2d rt(r[3 * i + 1], r[3 * i + 2]), slip(hu[3 * i + 1], hu[3 * i + 2]);
+    EXPECT_LE(rt.norm(), threshold[i] * (1 + 1e-12));
+    if (rt.norm() < threshold[i] * (1 - 1e-9)) {
+      EXPECT_LT(slip.norm(), 1e-9 * scale) << "node " << i << " sticks but slips";
+      ++sticking;
+    } else {  // the reaction opposes the slip: slip = -k r_t, k > 0
+      EXPECT_GT(slip.norm(), 1e-9);
+      EXPECT_LT(std::fabs(slip[0] * rt[1] - slip[1] * rt[0]), 1e-9 * scale * slip.norm());
+      EXPECT_LT(slip.dot(rt), 0.0);
+      ++sliding;
+    }
+  }
+  EXPECT_GT(sticking, 0);
+  EXPECT_GT(sliding, 0);
+
+  // the second tangent's dofs held: the 2D step on (n, t1)
+  std::vector<double> held(n, 1.0);
+  for (int i = 0; i < m; ++i) held[nodes[i] + 9] = 0.0;
+  SparseMatrix a_held = a;
+  for (int i = 0; i < m; ++i) a_held.coeffRef(nodes[i] + 9, nodes[i] + 9) = 1e30;
+  sma::SpdFactor k_held;
+  k_held.factorize(a_held);
+  const sma::DelassusFactor c3 = sma::delassus_factor(k_held, h, held, false);
+  std::vector<Eigen::Triplet<double, int>> t2;
+  for (int i = 0; i < m; ++i) t2.emplace_back(2 * i, nodes[i], 1.0), t2.emplace_back(2 * i + 1, nodes[i] + 1, 1.0);
+  SparseMatrix h2(2 * m, n);
+  h2.setFromTriplets(t2.begin(), t2.end());
+  const sma::DelassusFactor c2 = sma::delassus_factor(k_held, h2, held, false);
+  std::vector<double> u3(n), u2(n), reference2(m, 0.0), tangent_free(m, 1.0);
+  Eigen::VectorXd r3 = Eigen::VectorXd::Zero(3 * m), r2 = Eigen::VectorXd::Zero(2 * m);
+  ASSERT_TRUE(sma::condensed_cone_step(k_held, c3, rhs, gap, threshold, reference, set, r3, u3).converged);
+  sma::ContactStepSettings set2 = set;
+  set2.polish = 0;
+  ASSERT_TRUE(sma::condensed_global_step(k_held, c2, rhs, gap, threshold, reference2, tangent_free, set2, r2, u2).converged);
+  for (int i = 0; i < m; ++i) {
+    EXPECT_NEAR(r3[3 * i], r2[2 * i], 1e-10 * scale);
+    EXPECT_NEAR(r3[3 * i + 1], r2[2 * i + 1], 1e-10 * scale);
+    EXPECT_EQ(r3[3 * i + 2], 0.0);
+  }
+  EXPECT_LT((Eigen::Map<Eigen::VectorXd>(u3.data(), n) - Eigen::Map<Eigen::VectorXd>(u2.data(), n)).norm(),
+            1e-10 * Eigen::Map<Eigen::VectorXd>(u2.data(), n).norm());
+}
