@@ -17,6 +17,12 @@ model, which solves the same problem (issue 49, its first check).
    the mid-length pressure within 2 % of sleeve-axisymmetric's at nr 2 and above the frictionless
    one by more than 10 % (the pipe holds back the sleeve's axial contraction).
 4. Bad input fails naming the option: -nt 1, -pipeE 2e11, -plane stress.
+5. Bending (the half section, the pipe turned about y), frictionless at 1e-3 rad: no node opens and
+   the moment's increments are equal to 1e-8 (a linear problem); the half section's clamping within
+   1e-3 of the quarter's; at every increment the moment balance of the sleeve (its support on z = 0
+   against the contact forces, 1e-9), the cone, complementarity and no penetration.
+6. Bending with friction (mu 0.2, 0.01 rad): nodes open and sliding, the same invariants, and a
+   moment above the frictionless one at the same angle, both resisting the rotation.
 Writes results/checks/sleeve_3d.json.
 """
 import json
@@ -48,6 +54,13 @@ def invariants(label, run_):
     check(s["heat_balance_residual_max"] <= 1e-8, f"{label}: heat balance {s['heat_balance_residual_max']:.2e}")
     last = run_["history"][-1]
     check(float(last["fraction_austenite"]) == 1.0, f"{label}: all austenite at the end ({last['fraction_austenite']})")
+
+
+def bend_invariants(label, b):
+    check(b["moment_balance_max"] <= 1e-9, f"{label}: moment balance (supports against contact) {b['moment_balance_max']:.2e}")
+    check(b["cone_excess_max"] <= 1e-9, f"{label}: |r_t| <= mu r_n at every node and increment ({b['cone_excess_max']:.2e})")
+    check(b["complementarity_max"] <= 1e-9, f"{label}: r_n gap = 0 ({b['complementarity_max']:.2e})")
+    check(b["gap_min"] >= -1e-9, f"{label}: no penetration ({b['gap_min']:.2e} of the interference)")
 
 
 def main():
@@ -82,6 +95,36 @@ def main():
           f"{axi_fr['final_pressure_mid'] / 1e6:.2f} MPa ({rel:+.2%}, within 2 %)")
     check(s["final_pressure_mid"] > 1.1 * solid[2]["summary"]["final_pressure_mid"],
           f"-mu 0.2: mid-length above the frictionless {solid[2]['summary']['final_pressure_mid'] / 1e6:.2f} MPa by > 10 %")
+
+    # 5. bending, frictionless, before any node opens (-bend 1e-3): the problem is linear, so the
+    # moment grows by the same amount at every increment after the first (the first also carries the
+    # clamped state's own moment: the half section's mesh is not mirror-symmetric about x = 0)
+    b0 = run("sleeve-3d", "bend0", "-bend", "1e-3", "-bendsteps", "4")
+    bend0 = rows(os.path.join(os.path.dirname(HERE), "build", "test-results", "sleeve-3d-bend0", "bend.csv"))
+    steps = [float(r["moment"]) for r in bend0]
+    d = [b - a for a, b in zip(steps, steps[1:])]
+    figures["bending_frictionless"] = {"moments": steps}
+    check(all(int(r["nodes_open"]) == 0 for r in bend0), "-bend 1e-3: no bore node opens")
+    check(max(abs(x - d[0]) for x in d) <= 1e-8 * abs(d[0]),
+          f"-bend 1e-3 frictionless: the moment's increments {', '.join(f'{x:.6f}' for x in d)} N m equal (linear) to 1e-8")
+    bend_invariants("-bend 1e-3", b0["summary"]["bending"])
+    half = b0["summary"]["final_pressure_mid"]
+    quarter = solid[2]["summary"]["final_pressure_mid"]
+    check(abs(half - quarter) <= 1e-3 * quarter, f"the half section's clamping: mid-length {half / 1e6:.4f} MPa, the "
+          f"quarter's {quarter / 1e6:.4f} MPa (within 1e-3)")
+
+    # 6. bending with friction (mu 0.2, 0.01 rad in one increment) against the frictionless one
+    b1 = run("sleeve-3d", "bend-mu", "-mu", "0.2", "-bend", "1e-2", "-bendsteps", "1")["summary"]["bending"]
+    f0 = run("sleeve-3d", "bend0-large", "-bend", "1e-2", "-bendsteps", "10")["summary"]["bending"]
+    bend_invariants("-mu 0.2 -bend 1e-2", b1)
+    bend_invariants("-bend 1e-2", f0)
+    figures["bending_friction"] = {"moment_mu": b1["moment_final"], "moment_frictionless": f0["moment_final"],
+                                   "open_mu": b1["nodes_open_final"], "sliding_mu": b1["nodes_sliding_final"]}
+    check(b1["nodes_open_final"] > 0 and b1["nodes_sliding_final"] > 0,
+          f"-mu 0.2 -bend 1e-2: nodes open ({b1['nodes_open_final']}) and sliding ({b1['nodes_sliding_final']})")
+    check(b1["moment_final"] > f0["moment_final"] > 0,
+          f"-bend 1e-2: the moment with friction {b1['moment_final'] / 1e3:.3f} kN m above the frictionless "
+          f"{f0['moment_final'] / 1e3:.3f} kN m, both > 0 (against the rotation)")
 
     # 4. bad input
     for args, culprit in ((["-nt", "1"], "-nt"), (["-pipeE", "2e11"], "-pipeE"), (["-plane", "stress"], "-plane")):

@@ -148,7 +148,7 @@ inline PsorResult condensed_cone_step(const SpdFactor& k, const DelassusFactor& 
       q[3 * i + c] = d.w(3 * i + c, 3 * i + c) != 0.0 ? -(hu[3 * i + c] - slip_reference[2 * i + c - 1]) : 0.0;
   }
   const Eigen::VectorXd g = Eigen::Map<const Eigen::VectorXd>(threshold.begin(), m);
-  const PsorResult res = psor_cone(d.w, q, g, settings.omega, settings.tol, settings.maxit, r);
+  const PsorResult res = psor_cone(d.w, q, g, settings.omega, settings.tol, settings.maxit, r, settings.polish);
   add_contact_load(d, r, z);
   k.backward(z, u);
   return res;

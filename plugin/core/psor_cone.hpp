@@ -24,6 +24,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "psor.hpp"
 
@@ -95,11 +96,118 @@ inline double cone_law_residual(const Eigen::MatrixXd& W, const Eigen::VectorXd&
   return scale > 0 ? worst / scale : worst;
 }
 
+// The polish of the 3D problem: a semismooth Newton method on its natural map (Alart and Curnier's
+// approach, with the exact generalized Jacobian), started from the sweeps' iterate. With
+// z = r - rho (W r - q) (rho = 1 / W_nn for the normal, 1 / max(W_t1t1, W_t2t2) for the pair),
+// F(r) = r - P(z), P the projections: max(0, z_n), and the disk |z_t| <= g (the segment where one
+// tangential motion is blocked, 0 where both are or g = 0). Newton's step solves
+// (I - D (I - rho W)) dr = -F (dense LU: the matrix is not symmetric), D = dP/dz per node: 1 or 0
+// for the normal; I inside the disk, (g / |z_t|) (I - d d') on its circle (d = z_t / |z_t|: the
+// sliding direction turns with the slip, which a fixed-direction active set misses); then
+// backtracking on |F|. Accepted when the natural-map residual is <= accept; otherwise the sweeps go
+// on (psor.hpp's polish plays the same role in 2D, where the interval makes the set's faces flat).
+namespace cone_detail {
+// P(z) and its derivative D for node i's rows k = 3i .. 3i + 2 (z, P, D: the whole vectors and matrix).
+// (D: the node's 3 x 3 block, its rows and columns k .. k + 2 addressed as 0 .. 2 through `base` = k)
+inline void project_node(const Eigen::MatrixXd& W, const Eigen::VectorXd& g, Eigen::Index i, const Eigen::VectorXd& z,
+                         Eigen::VectorXd& p, Eigen::MatrixXd* D, Eigen::Index base) {
+  const Eigen::Index k = 3 * i;
+  p[k] = std::max(0.0, z[k]);
+  if (D) (*D)(k - base, k - base) = z[k] > 0.0 ? 1.0 : 0.0;
+  const bool free1 = W(k + 1, k + 1) != 0.0, free2 = W(k + 2, k + 2) != 0.0;
+  p[k + 1] = p[k + 2] = 0.0;
+  if (!(g[i] > 0.0) || (!free1 && !free2)) return;
+  if (free1 != free2) {  // the segment of the free component
+    const Eigen::Index c = free1 ? k + 1 : k + 2;
+    p[c] = std::clamp(z[c], -g[i], g[i]);
+    if (D) (*D)(c - base, c - base) = std::fabs(z[c]) < g[i] ? 1.0 : 0.0;
+    return;
+  }
+  const Eigen::Vector2d zt(z[k + 1], z[k + 2]);
+  const double norm = zt.norm();
+  if (norm <= g[i]) {
+    p[k + 1] = zt[0], p[k + 2] = zt[1];
+    if (D) (*D)(k + 1 - base, k + 1 - base) = (*D)(k + 2 - base, k + 2 - base) = 1.0;
+    return;
+  }
+  const Eigen::Vector2d d = zt / norm;
+  p[k + 1] = g[i] * d[0], p[k + 2] = g[i] * d[1];
+  if (D) (*D).block<2, 2>(k + 1 - base, k + 1 - base) = (g[i] / norm) * (Eigen::Matrix2d::Identity() - d * d.transpose());
+}
+}  // namespace cone_detail
+
+inline bool polish_cone(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, const Eigen::VectorXd& g, double accept,
+                        Eigen::VectorXd& r, int max_rounds = 15) {
+  const Eigen::Index m = g.size(), n = 3 * m;
+  Eigen::VectorXd rho(n);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    const Eigen::Index k = 3 * i;
+    rho[k] = 1.0 / W(k, k);
+    const double wtt = std::max(W(k + 1, k + 1), W(k + 2, k + 2));
+    rho[k + 1] = rho[k + 2] = wtt > 0.0 ? 1.0 / wtt : 0.0;
+  }
+  // D is block diagonal (3 x 3 per node): held as an n x 3 matrix of the blocks, so that
+  // J = I - D + D diag(rho) W costs 9 n^2 rather than a dense product's n^3.
+  Eigen::MatrixXd block(3, 3);
+  const auto natural = [&](const Eigen::VectorXd& x, Eigen::VectorXd& F, Eigen::MatrixXd* D) {
+    const Eigen::VectorXd z = x - rho.cwiseProduct(W * x - q);
+    Eigen::VectorXd p(n);
+    if (D) D->setZero(n, 3);
+    for (Eigen::Index i = 0; i < m; ++i) {
+      block.setZero();
+      cone_detail::project_node(W, g, i, z, p, D ? &block : nullptr, 3 * i);
+      if (D) D->middleRows(3 * i, 3) = block;
+    }
+    F = x - p;
+  };
+  // An iterate is accepted projected on the sets (r_n >= 0, the disk; Newton's iterates may be
+  // outside them by round-off) when the laws hold to accept there.
+  const auto accepted = [&](const Eigen::VectorXd& x) {
+    Eigen::VectorXd y = x;
+    for (Eigen::Index i = 0; i < m; ++i) {
+      y[3 * i] = std::max(0.0, y[3 * i]);
+      const Eigen::Vector2d t = project_disk(Eigen::Vector2d(y[3 * i + 1], y[3 * i + 2]), g[i]);
+      y[3 * i + 1] = t[0], y[3 * i + 2] = t[1];
+    }
+    if (!(cone_law_residual(W, q, g, y) <= accept)) return false;
+    r = y;
+    return true;
+  };
+  Eigen::VectorXd x = r, F(n), Ftrial(n), xtrial(n);
+  Eigen::MatrixXd D(n, 3), J(n, n);
+  for (int round = 0; round < max_rounds; ++round) {
+    if (accepted(x)) return true;
+    natural(x, F, &D);
+    // J = I - D (I - rho W) = I - D + D diag(rho) W, block row by block row
+    for (Eigen::Index i = 0; i < m; ++i) {
+      const Eigen::Matrix3d Di = D.middleRows(3 * i, 3);
+      J.middleRows(3 * i, 3).noalias() = Di * (rho.segment(3 * i, 3).asDiagonal() * W.middleRows(3 * i, 3));
+      J.block(3 * i, 3 * i, 3, 3) += Eigen::Matrix3d::Identity() - Di;
+    }
+    const Eigen::VectorXd step = J.partialPivLu().solve(-F);
+    if (!step.allFinite()) return false;
+    const double merit = F.squaredNorm();
+    double t = 1.0;
+    for (; t > 1e-8; t *= 0.5) {
+      xtrial = x + t * step;
+      natural(xtrial, Ftrial, nullptr);
+      if (Ftrial.squaredNorm() <= (1 - 1e-4 * t) * merit) break;
+    }
+    if (!(t > 1e-8)) return false;
+    x = xtrial;
+  }
+  return accepted(x);
+}
+
 // Sweeps from the given r (a warm start) until the relative change of r over a sweep is <= tol
-// (measured per unit relaxation, as psor_condensed's) or maxit sweeps. Throws on inconsistent
-// input; the caller reads `converged`, `iterations` and `residual`.
+// (measured per unit relaxation, as psor_condensed's) or maxit sweeps; with polish_every > 0 the
+// active-set polish (polish_cone) is tried every that many sweeps and ends them when it solves the
+// problem (converged, residual = its law residual): the ring's all-active Delassus operator makes
+// the sweeps alone converge linearly at a rate set by its conditioning (200000 sweeps left a change
+// of 3e-7 on sleeve-3d's bending, measured). Throws on inconsistent input; the caller reads
+// `converged`, `iterations` and `residual`.
 inline PsorResult psor_cone(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, const Eigen::VectorXd& g,
-                            double omega, double tol, int maxit, Eigen::VectorXd& r) {
+                            double omega, double tol, int maxit, Eigen::VectorXd& r, int polish_every = 0) {
   const Eigen::Index m = g.size();
   if (W.rows() != 3 * m || W.cols() != 3 * m || q.size() != 3 * m || r.size() != 3 * m)
     throw std::invalid_argument("psor_cone: W must be 3m x 3m and q, r of length 3m for m = " + std::to_string(m) +
@@ -161,6 +269,13 @@ inline PsorResult psor_cone(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, 
     }
     result.residual = (size > 0 ? change / size : change) / std::min(omega, 1.0);
     if (result.residual <= tol) {
+      result.converged = true;
+      break;
+    }
+    // (accepted at the sweeps' own tolerance: Newton's last steps are cheap, and the slip-threshold
+    // fixed point around this needs its answers to better than its own tolerance)
+    if (polish_every > 0 && result.iterations % polish_every == 0 && polish_cone(W, q, g, tol, r)) {
+      result.residual = cone_law_residual(W, q, g, r);
       result.converged = true;
       break;
     }

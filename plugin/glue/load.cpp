@@ -52,7 +52,7 @@
 //       one condensed contact global step (plugin/core/contact_step.hpp): the free motion of the
 //       contact rows, the PSOR on W (r warm start in/out), u = K^-1 (rhs + S H' r), by one forward
 //       and one backward solve; returns the sweep count.
-//   long SpdConeStep(long handle, real[] rhs, real[int,int] table, real[] [omega, tol, maxit],
+//   long SpdConeStep(long handle, real[] rhs, real[int,int] table, real[] [omega, tol, maxit, polish],
 //                    real[] r, real[] u, real[] info)
 //       the same for a 3D contact problem (three rows per node (n, t1, t2), SpdDelassus with
 //       normalOnly 0): table [gap, threshold g, t1.u, t2.u at the stage's start] per node, the

@@ -114,7 +114,7 @@ long SpdDelassusAddCompliance(long const& handle, KNM<double>* const& C, KNM<dou
 // One condensed 3D contact step (plugin/core/contact_step.hpp condensed_cone_step) on the contact
 // problem SpdDelassus formed in slot `handle` with three rows per node (n, t1, t2), all formed;
 // table: one row per node [gap, threshold g, t1.u at the stage's start, t2.u at it];
-// settings = [omega, tol, maxit]; r = (r_n, r_t1, r_t2) per node, the warm start, in/out.
+// settings = [omega, tol, maxit, polish]; r = (r_n, r_t1, r_t2) per node, the warm start, in/out.
 long SpdConeStep(long const& handle, KN<double>* const& rhs, KNM<double>* const& table, KN<double>* const& settings,
                  KN<double>* const& r, KN<double>* const& u, KN<double>* const& info) {
   return guarded("SpdConeStep", [&] {
@@ -122,7 +122,7 @@ long SpdConeStep(long const& handle, KN<double>* const& rhs, KNM<double>* const&
     if (!slot.contact) throw std::invalid_argument("no contact problem in slot " + std::to_string(handle) + " (SpdDelassus first)");
     const long m = table->N(), n = slot.factor.size();
     if (m > 0 && table->M() != 4) throw std::invalid_argument("the table must have 4 columns [gap, g, t1.u, t2.u]");
-    if (settings->N() != 3) throw std::invalid_argument("settings must be [omega, tol, maxit]");
+    if (settings->N() != 4) throw std::invalid_argument("settings must be [omega, tol, maxit, polish]");
     if (info->N() != 2) throw std::invalid_argument("info must have 2 entries");
     if (rhs->N() != n) throw std::invalid_argument("rhs of " + std::to_string(rhs->N()) + " values for " + std::to_string(n) + " dofs");
     if (r->N() != 3 * m) throw std::invalid_argument("r must have 3 entries per contact node");
@@ -138,6 +138,7 @@ long SpdConeStep(long const& handle, KN<double>* const& rhs, KNM<double>* const&
     set.omega = (*settings)[0];
     set.tol = (*settings)[1];
     set.maxit = (int)(*settings)[2];
+    set.polish = (int)(*settings)[3];
     Eigen::VectorXd rv = Eigen::Map<const Eigen::VectorXd>(&(*r)[0], 3 * m);
     const sma::PsorResult res =
         sma::condensed_cone_step(slot.factor, *slot.contact, cview(rhs), gap, threshold, reference, set, rv, view(u));

@@ -237,3 +237,40 @@ TEST(PsorCone, RefusesInconsistentInput) {
   EXPECT_EQ(r[4], 0.0);
   EXPECT_EQ(r[5], 0.0);
 }
+
+// The polish (a semismooth Newton method on the natural map) finishes what the sweeps alone take
+// long to: on badly conditioned problems (W's eigenvalues from 1e-6 to 1) the sweeps with the
+// polish every 10 reach a law residual of 1e-10 in at most 500 sweeps, satisfying every law, where
+// as many sweeps alone leave a residual above 1e-7.
+TEST(PsorCone, PolishFinishesBadlyConditionedProblems) {
+  std::mt19937 rng(11);
+  std::normal_distribution<double> normal;
+  int plain_short = 0;
+  for (int trial = 0; trial < 10; ++trial) {
+    const int m = 12, n = 3 * m;
+    Eigen::MatrixXd A(n, n);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) A(i, j) = normal(rng);
+    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(A);
+    const Eigen::MatrixXd Q = qr.householderQ();
+    Eigen::VectorXd eigen(n);
+    for (int k = 0; k < n; ++k) eigen[k] = std::pow(10.0, -6.0 * k / (n - 1));
+    ConeProblem p;
+    p.W = Q * eigen.asDiagonal() * Q.transpose();
+    p.q.resize(n);
+    p.g.resize(m);
+    for (int k = 0; k < n; ++k) p.q[k] = 0.01 * normal(rng);
+    for (int i = 0; i < m; ++i) p.q[3 * i] = std::fabs(p.q[3 * i]) + 0.01, p.g[i] = 0.02;
+    Eigen::VectorXd plain = Eigen::VectorXd::Zero(n), polished = Eigen::VectorXd::Zero(n);
+    const sma::PsorResult res = sma::psor_cone(p.W, p.q, p.g, 1.5, 1e-10, 20000, polished, 10);
+    // the sweeps alone, as many as the polished run took: their answer is still far off
+    sma::psor_cone(p.W, p.q, p.g, 1.5, 0.0, res.iterations, plain);
+    plain_short += sma::cone_law_residual(p.W, p.q, p.g, plain) > 1e3 * 1e-10;
+    ASSERT_TRUE(res.converged) << "trial " << trial;
+    EXPECT_LE(res.iterations, 500) << "trial " << trial;
+    EXPECT_LE(sma::cone_law_residual(p.W, p.q, p.g, polished), 1e-10) << "trial " << trial;
+    Statuses count;
+    expect_laws(p, polished, 1e-8, count);
+  }
+  EXPECT_GE(plain_short, 5);  // the problems are hard for the sweeps alone
+}
