@@ -111,6 +111,38 @@ long SpdDelassusAddCompliance(long const& handle, KNM<double>* const& C, KNM<dou
   });
 }
 
+// The checks the two contact steps share: the slot's contact problem, the table (one row per node
+// of `columns` columns, named by `layout`), the settings [omega, tol, maxit, polish], info, the
+// right-hand side and `rows` reactions per node; returns the slot. The settings as the core's.
+FactorSlot& ContactSlotChecked(long handle, KN<double>* rhs, KNM<double>* table, long columns, const char* layout,
+                               KN<double>* settings, KN<double>* r, long rows, KN<double>* info) {
+  FactorSlot& slot = SlotAt(handle);
+  if (!slot.contact) throw std::invalid_argument("no contact problem in slot " + std::to_string(handle) + " (SpdDelassus first)");
+  const long m = table->N(), n = slot.factor.size();
+  if (m > 0 && table->M() != columns) throw std::invalid_argument(std::string("the table must have ") + layout);
+  if (settings->N() != 4) throw std::invalid_argument("settings must be [omega, tol, maxit, polish]");
+  if (info->N() != 2) throw std::invalid_argument("info must have 2 entries");
+  if (rhs->N() != n) throw std::invalid_argument("rhs of " + std::to_string(rhs->N()) + " values for " + std::to_string(n) + " dofs");
+  if (r->N() != rows * m)
+    throw std::invalid_argument("r must have " + std::to_string(rows) + " entries per contact node");
+  return slot;
+}
+sma::ContactStepSettings ContactSettingsOf(KN<double>* settings) {
+  sma::ContactStepSettings set;
+  set.omega = (*settings)[0];
+  set.tol = (*settings)[1];
+  set.maxit = (int)(*settings)[2];
+  set.polish = (int)(*settings)[3];
+  return set;
+}
+// The step's reactions back into r, its residual and convergence into info; returns its sweeps.
+long ContactStepReturned(const sma::PsorResult& res, const Eigen::VectorXd& rv, KN<double>* r, KN<double>* info) {
+  for (long i = 0; i < (long)rv.size(); ++i) (*r)[i] = rv[i];
+  (*info)[0] = res.residual;
+  (*info)[1] = res.converged ? 1 : 0;
+  return (long)res.iterations;
+}
+
 // One condensed 3D contact step (plugin/core/contact_step.hpp condensed_cone_step) on the contact
 // problem SpdDelassus formed in slot `handle` with three rows per node (n, t1, t2), all formed;
 // table: one row per node [gap, threshold g, t1.u at the stage's start, t2.u at it];
@@ -118,14 +150,8 @@ long SpdDelassusAddCompliance(long const& handle, KNM<double>* const& C, KNM<dou
 long SpdConeStep(long const& handle, KN<double>* const& rhs, KNM<double>* const& table, KN<double>* const& settings,
                  KN<double>* const& r, KN<double>* const& u, KN<double>* const& info) {
   return guarded("SpdConeStep", [&] {
-    FactorSlot& slot = SlotAt(handle);
-    if (!slot.contact) throw std::invalid_argument("no contact problem in slot " + std::to_string(handle) + " (SpdDelassus first)");
+    FactorSlot& slot = ContactSlotChecked(handle, rhs, table, 4, "4 columns [gap, g, t1.u, t2.u]", settings, r, 3, info);
     const long m = table->N(), n = slot.factor.size();
-    if (m > 0 && table->M() != 4) throw std::invalid_argument("the table must have 4 columns [gap, g, t1.u, t2.u]");
-    if (settings->N() != 4) throw std::invalid_argument("settings must be [omega, tol, maxit, polish]");
-    if (info->N() != 2) throw std::invalid_argument("info must have 2 entries");
-    if (rhs->N() != n) throw std::invalid_argument("rhs of " + std::to_string(rhs->N()) + " values for " + std::to_string(n) + " dofs");
-    if (r->N() != 3 * m) throw std::invalid_argument("r must have 3 entries per contact node");
     std::vector<double> gap(m), threshold(m), reference(2 * m);
     for (long i = 0; i < m; ++i) {
       gap[i] = (*table)(i, 0L);
@@ -134,18 +160,10 @@ long SpdConeStep(long const& handle, KN<double>* const& rhs, KNM<double>* const&
       reference[2 * i + 1] = (*table)(i, 3L);
     }
     if (u->N() != n) u->resize(n);
-    sma::ContactStepSettings set;
-    set.omega = (*settings)[0];
-    set.tol = (*settings)[1];
-    set.maxit = (int)(*settings)[2];
-    set.polish = (int)(*settings)[3];
     Eigen::VectorXd rv = Eigen::Map<const Eigen::VectorXd>(&(*r)[0], 3 * m);
-    const sma::PsorResult res =
-        sma::condensed_cone_step(slot.factor, *slot.contact, cview(rhs), gap, threshold, reference, set, rv, view(u));
-    for (long i = 0; i < 3 * m; ++i) (*r)[i] = rv[i];
-    (*info)[0] = res.residual;
-    (*info)[1] = res.converged ? 1 : 0;
-    return (long)res.iterations;
+    const sma::PsorResult res = sma::condensed_cone_step(slot.factor, *slot.contact, cview(rhs), gap, threshold, reference,
+                                                         ContactSettingsOf(settings), rv, view(u));
+    return ContactStepReturned(res, rv, r, info);
   });
 }
 
@@ -156,14 +174,8 @@ long SpdContactStep(long const& handle, KN<double>* const& rhs, KNM<double>* con
                     KN<double>* const& tangentFree, KN<double>* const& settings, KN<double>* const& r,
                     KN<double>* const& u, KN<double>* const& info) {
   return guarded("SpdContactStep", [&] {
-    FactorSlot& slot = SlotAt(handle);
-    if (!slot.contact) throw std::invalid_argument("no contact problem in slot " + std::to_string(handle) + " (SpdDelassus first)");
+    FactorSlot& slot = ContactSlotChecked(handle, rhs, table, 6, "6 columns", settings, r, 2, info);
     const long m = table->N(), n = slot.factor.size();
-    if (m > 0 && table->M() != 6) throw std::invalid_argument("the table must have 6 columns");
-    if (settings->N() != 4) throw std::invalid_argument("settings must be [omega, tol, maxit, polish]");
-    if (info->N() != 2) throw std::invalid_argument("info must have 2 entries");
-    if (rhs->N() != n) throw std::invalid_argument("rhs of " + std::to_string(rhs->N()) + " values for " + std::to_string(n) + " dofs");
-    if (r->N() != 2 * m) throw std::invalid_argument("r must have 2 entries per contact node");
     std::vector<double> gap(m), threshold(m), reference(m);
     for (long i = 0; i < m; ++i) {
       gap[i] = (*table)(i, 3L);
@@ -171,18 +183,11 @@ long SpdContactStep(long const& handle, KN<double>* const& rhs, KNM<double>* con
       reference[i] = (*table)(i, 5L);
     }
     if (u->N() != n) u->resize(n);
-    sma::ContactStepSettings set;
-    set.omega = (*settings)[0];
-    set.tol = (*settings)[1];
-    set.maxit = (int)(*settings)[2];
-    set.polish = (int)(*settings)[3];
     Eigen::VectorXd rv = Eigen::Map<const Eigen::VectorXd>(&(*r)[0], 2 * m);
     const sma::PsorResult res = sma::condensed_global_step(slot.factor, *slot.contact, cview(rhs), gap, threshold,
-                                                           reference, cview(tangentFree), set, rv, view(u));
-    for (long i = 0; i < 2 * m; ++i) (*r)[i] = rv[i];
-    (*info)[0] = res.residual;
-    (*info)[1] = res.converged ? 1 : 0;
-    return (long)res.iterations;
+                                                           reference, cview(tangentFree), ContactSettingsOf(settings), rv,
+                                                           view(u));
+    return ContactStepReturned(res, rv, r, info);
   });
 }
 
