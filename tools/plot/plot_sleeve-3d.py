@@ -6,6 +6,9 @@ columns: the ring-averaged pressure per layer z in bore-*.csv), drawn by plot_sl
   force-temperature.png  the ring-averaged contact pressure at mid-length (z = 0), at the free end
                          and its mean over the bore, against the bore's mean temperature and time
   bore-pressure.png      the ring-averaged contact pressure along the bore at the three instants
+  bend.png               (-bend > 0) the moment the joint resists with (kN m) and the bore's nodes
+                         open and sliding against the pipe's rotation (mrad); the first sliding
+                         and the first leak path marked
 Usage: tools/plot/plot_sleeve-3d.py results/sleeve-3d
 """
 import importlib.util
@@ -16,9 +19,42 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))  # tools/: results_io
 import results_io  # noqa: E402
 
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
 spec = importlib.util.spec_from_file_location("plot_axisymmetric", os.path.join(HERE, "plot_sleeve-axisymmetric.py"))
 axisymmetric = importlib.util.module_from_spec(spec)
 spec.loader.exec_module(axisymmetric)
+
+
+def bend(outdir, summary):
+    path = os.path.join(outdir, "bend.csv")
+    if not os.path.exists(path):
+        return
+    d = axisymmetric.read_csv(path)
+    angle = [a * 1e3 for a in d["angle"]]
+    fig, (left, right) = plt.subplots(1, 2, figsize=(12, 4.5))
+    left.plot([0] + angle, [0] + [m / 1e3 for m in d["moment"]], marker=".", lw=1.2)
+    b = summary["bending"]
+    for key, label, color in (("first_sliding", "first sliding", "C1"), ("leak_path", "leak path", "C3")):
+        if b.get(key + "_angle") is not None:
+            left.axvline(b[key + "_angle"] * 1e3, color=color, ls="--", lw=0.8, label=label)
+    left.set_xlabel("pipe rotation (mrad)")
+    left.set_ylabel("moment the joint resists with (kN m)")
+    left.grid(alpha=0.3)
+    if left.get_legend_handles_labels()[0]:
+        left.legend(fontsize=8)
+    right.plot(angle, d["nodes_open"], marker=".", lw=1, label="open (no pressure)")
+    right.plot(angle, d["nodes_sliding"], marker=".", lw=1, label="sliding on the pipe")
+    right.set_xlabel("pipe rotation (mrad)")
+    right.set_ylabel(f"bore nodes (of {int(d['nodes_pressing'][0] + d['nodes_open'][0])})")
+    right.grid(alpha=0.3)
+    right.legend(fontsize=8)
+    fig.suptitle(f"{summary['scene']}: the coupling bent by its pipe ends, mu = {summary['parameters']['mu']:g}")
+    fig.tight_layout()
+    axisymmetric.save(fig, os.path.join(outdir, "bend.png"), 120)
 
 
 def main():
@@ -26,6 +62,7 @@ def main():
     summary = results_io.read_json(os.path.join(outdir, "summary.json"))
     axisymmetric.force_temperature(outdir, summary)
     axisymmetric.bore_pressure(outdir, summary)
+    bend(outdir, summary)
     print(f"figures in {outdir}/")
 
 
