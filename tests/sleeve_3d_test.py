@@ -25,7 +25,6 @@ model, which solves the same problem (issue 49, its first check).
    moment above the frictionless one at the same angle, both resisting the rotation.
 Writes results/checks/sleeve_3d.json.
 """
-import json
 import math
 import os
 import sys
