@@ -75,24 +75,27 @@ Eigen::VectorXd siconos_tresca(const Eigen::MatrixXd& W, const Eigen::VectorXd& 
   return z;
 }
 
-Eigen::VectorXd siconos_coulomb(const Eigen::MatrixXd& W, const Eigen::VectorXd& q,
-                                const Eigen::VectorXd& mu) {
+// Siconos' frictional-contact nonsmooth Gauss-Seidel in `dimension` 2 (fc2d_nsgs_dense) or 3
+// (fc3d_nsgs), tolerance 1e-15: the reactions, (n, t) or (n, t1, t2) per contact.
+Eigen::VectorXd siconos_coulomb(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, const Eigen::VectorXd& mu,
+                                int dimension = 2) {
   const int n = (int)q.size();
   Eigen::VectorXd qs = -q, muv = mu, r = Eigen::VectorXd::Zero(n), v(n);
   FrictionContactProblem problem;
-  problem.dimension = 2;
-  problem.numberOfContacts = n / 2;
+  problem.dimension = dimension;
+  problem.numberOfContacts = n / dimension;
   problem.M = dense(W);
   problem.q = qs.data();
   problem.mu = muv.data();
-  SolverOptions* options = solver_options_create(SICONOS_FRICTION_2D_NSGS);
+  SolverOptions* options = solver_options_create(dimension == 2 ? SICONOS_FRICTION_2D_NSGS : SICONOS_FRICTION_3D_NSGS);
   options->dparam[SICONOS_DPARAM_TOL] = 1e-15;
   options->iparam[SICONOS_IPARAM_MAX_ITER] = 1000000;
   int info = -1;
-  fc2d_nsgs_dense(&problem, r.data(), v.data(), &info, options);
+  if (dimension == 2) fc2d_nsgs_dense(&problem, r.data(), v.data(), &info, options);
+  else fc3d_nsgs(&problem, r.data(), v.data(), &info, options);
   solver_options_delete(options);
   NM_free(problem.M);
-  EXPECT_EQ(info, 0) << "Siconos fc2d_nsgs_dense failed";
+  EXPECT_EQ(info, 0) << "Siconos " << (dimension == 2 ? "fc2d_nsgs_dense" : "fc3d_nsgs") << " failed";
   return r;
 }
 
@@ -262,30 +265,6 @@ TEST(SiconosOracle, CoulombSceneDefaultsNearFc2dNsgs) {
                 figures);
 }
 
-namespace {
-
-Eigen::VectorXd siconos_coulomb_3d(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, const Eigen::VectorXd& mu) {
-  const int n = (int)q.size();
-  Eigen::VectorXd qs = -q, muv = mu, r = Eigen::VectorXd::Zero(n), v(n);
-  FrictionContactProblem problem;
-  problem.dimension = 3;
-  problem.numberOfContacts = n / 3;
-  problem.M = dense(W);
-  problem.q = qs.data();
-  problem.mu = muv.data();
-  SolverOptions* options = solver_options_create(SICONOS_FRICTION_3D_NSGS);
-  options->dparam[SICONOS_DPARAM_TOL] = 1e-15;
-  options->iparam[SICONOS_IPARAM_MAX_ITER] = 1000000;
-  int info = -1;
-  fc3d_nsgs(&problem, r.data(), v.data(), &info, options);
-  solver_options_delete(options);
-  NM_free(problem.M);
-  EXPECT_EQ(info, 0) << "Siconos fc3d_nsgs failed";
-  return r;
-}
-
-}  // namespace
-
 // The 3D cone on 60 random problems, mostly in contact: the slip-threshold fixed point around
 // psor_cone (omega 1.3, PSOR tol 1e-15, slip tol 1e-13) against fc3d_nsgs (tol 1e-15); Siconos'
 // answer must satisfy the laws itself (natural-map residual with g = mu r_n), and ours too.
@@ -304,7 +283,7 @@ TEST(SiconosOracle, ConeFixedPointEqualsFc3dNsgs) {
     const sma::ConeFixedPointResult res = sma::coulomb_cone_fixed_point(W, q, mu, 1.3, 1e-15, 200000, 1e-13, 500, r);
     ASSERT_TRUE(res.converged) << "trial " << trial;
     figures.fixed_point_iterations_max = std::max(figures.fixed_point_iterations_max, res.iterations);
-    const Eigen::VectorXd ref = siconos_coulomb_3d(W, q, mu);
+    const Eigen::VectorXd ref = siconos_coulomb(W, q, mu, 3);
     Eigen::VectorXd gref(m), gour(m);
     for (int i = 0; i < m; ++i) gref[i] = mu[i] * ref[3 * i], gour[i] = mu[i] * r[3 * i];
     EXPECT_LE(sma::cone_law_residual(W, q, gref, ref), 1e-10) << "trial " << trial;

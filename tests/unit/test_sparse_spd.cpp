@@ -57,6 +57,18 @@ SparseMatrix contact_rows(int n, const int* nodes, int m) {
   return h;
 }
 
+// Contact rows that are unit vectors on dofs: per node i, one row per entry of `offsets`, on the dof
+// nodes[i] + offset (the normal first, then the tangents).
+SparseMatrix unit_rows(int n, const int* nodes, int m, const std::vector<int>& offsets) {
+  const int k = (int)offsets.size();
+  std::vector<Eigen::Triplet<double, int>> t;
+  for (int i = 0; i < m; ++i)
+    for (int c = 0; c < k; ++c) t.emplace_back(k * i + c, nodes[i] + offsets[c], 1.0);
+  SparseMatrix h(k * m, n);
+  h.setFromTriplets(t.begin(), t.end());
+  return h;
+}
+
 std::vector<double> to_std(const Eigen::VectorXd& v) { return std::vector<double>(v.data(), v.data() + v.size()); }
 
 TEST(SparseSpd, SolveEqualsDenseSolve) {
@@ -356,14 +368,9 @@ namespace {
 TEST(ContactStep, SolvesTheCondensedProblem) {
   const SparseMatrix a = grid_laplacian(9, 9, 0.05);
   const int n = a.rows(), m = 4;
-  std::vector<Eigen::Triplet<double, int>> t;
   const int nodes[m] = {3, 22, 40, 58};
-  for (int i = 0; i < m; ++i) {
-    t.emplace_back(2 * i, nodes[i], 1.0);          // normal component: the dof itself
-    t.emplace_back(2 * i + 1, nodes[i] + 1, 1.0);  // "tangential": a neighbour dof
-  }
-  SparseMatrix h(2 * m, n);
-  h.setFromTriplets(t.begin(), t.end());
+  // normal component: the dof itself; "tangential": a neighbour dof
+  const SparseMatrix h = unit_rows(n, nodes, m, {0, 1});
   sma::SpdFactor k;
   k.factorize(a);
   std::vector<double> free(n, 1.0);
@@ -570,14 +577,7 @@ TEST(ContactStep, ConeStepSatisfiesTheLaws) {
   const SparseMatrix a = grid_laplacian(9, 9, 0.05);
   const int n = a.rows(), m = 4;
   const int nodes[m] = {12, 22, 40, 58};
-  std::vector<Eigen::Triplet<double, int>> t;
-  for (int i = 0; i < m; ++i) {
-    t.emplace_back(3 * i, nodes[i], 1.0);
-    t.emplace_back(3 * i + 1, nodes[i] + 1, 1.0);
-    t.emplace_back(3 * i + 2, nodes[i] + 9, 1.0);
-  }
-  SparseMatrix h(3 * m, n);
-  h.setFromTriplets(t.begin(), t.end());
+  const SparseMatrix h = unit_rows(n, nodes, m, {0, 1, 9});
   sma::SpdFactor k;
   k.factorize(a);
   std::vector<double> free(n, 1.0);
@@ -625,10 +625,7 @@ TEST(ContactStep, ConeStepSatisfiesTheLaws) {
   sma::SpdFactor k_held;
   k_held.factorize(a_held);
   const sma::DelassusFactor c3 = sma::delassus_factor(k_held, h, held, false);
-  std::vector<Eigen::Triplet<double, int>> t2;
-  for (int i = 0; i < m; ++i) t2.emplace_back(2 * i, nodes[i], 1.0), t2.emplace_back(2 * i + 1, nodes[i] + 1, 1.0);
-  SparseMatrix h2(2 * m, n);
-  h2.setFromTriplets(t2.begin(), t2.end());
+  const SparseMatrix h2 = unit_rows(n, nodes, m, {0, 1});
   const sma::DelassusFactor c2 = sma::delassus_factor(k_held, h2, held, false);
   std::vector<double> u3(n), u2(n), reference2(m, 0.0), tangent_free(m, 1.0);
   Eigen::VectorXd r3 = Eigen::VectorXd::Zero(3 * m), r2 = Eigen::VectorXd::Zero(2 * m);
