@@ -12,11 +12,17 @@ model, which solves the same problem (issue 49, its first check).
 2. Invariants on every run: equilibrium of the sleeve (K u - B s = H' r on the free dofs, 1e-9),
    no penetration, complementarity and the cone at every bore node (1e-9), the discrete heat
    balance at round-off, all austenite at the end.
-3. Friction along z (-mu 0.2, nr 2): the cone at every node, the symmetry plane's axial force
-   balancing the pipe's friction (1e-9 of the normal force), the slip-threshold loop at work, and
-   the mid-length pressure within 2 % of sleeve-axisymmetric's at nr 2 and above the frictionless
-   one by more than 10 % (the pipe holds back the sleeve's axial contraction).
-4. Bad input fails naming the option: -nt 1, -pipeE 2e11, -plane stress.
+3. Friction along z and the pull-out (-length 0.05 -mu 0.2 -pullout 5e-4 -pullsteps 5: the whole
+   length, its end face z = 0 held axially, the pipe moved towards it), against sleeve-axisymmetric
+   with the same options at nr 2: the clamping's invariants with friction (the cone at every node,
+   the held face's axial force balancing the pipe's friction, 1e-9 of the normal force, the
+   slip-threshold loop at work) and its mid-length pressure within 0.5 % of the axisymmetric one;
+   the pull-out on the 3D cone (both tangential reactions free): the plateau F = mu N to 1e-8 with
+   every pressing node slipping (so no circumferential friction is left at any node), F within
+   0.5 % of the axisymmetric one, and at every increment the sleeve's axial balance (1e-9), the
+   cone, complementarity and no penetration.
+4. Bad input fails naming the option: -nt 1, -pipeE 2e11, -plane stress, -pullout without -mu,
+   -pullout with -bend.
 5. Bending (the half section, the pipe turned about y), frictionless at 1e-3 rad: no node opens and
    the moment's increments are equal to 1e-8 (a linear problem); the half section's clamping within
    1e-3 of the quarter's; at every increment the moment balance of the sleeve (its support on z = 0
@@ -39,7 +45,10 @@ COMMON = ["-quiet", "1"]
 
 def run(scene, tag, *args):
     out = run_scene(scene, "sleeve-3d-" + tag, *COMMON, *args)
-    return {"summary": summary_of(out), "history": rows(os.path.join(out, "history.csv"))}
+    run_ = {"summary": summary_of(out), "history": rows(os.path.join(out, "history.csv"))}
+    if os.path.exists(os.path.join(out, "pullout.csv")):
+        run_["pullout"] = rows(os.path.join(out, "pullout.csv"))
+    return run_
 
 
 def invariants(label, run_):
@@ -55,8 +64,10 @@ def invariants(label, run_):
     check(float(last["fraction_austenite"]) == 1.0, f"{label}: all austenite at the end ({last['fraction_austenite']})")
 
 
-def bend_invariants(label, b):
-    check(b["moment_balance_max"] <= 1e-9, f"{label}: moment balance (supports against contact) {b['moment_balance_max']:.2e}")
+def stage_invariants(label, b):
+    """The contact laws at every increment of a stage after the clamping (summary's bending or pullout)."""
+    key = "moment_balance_max" if "moment_balance_max" in b else "axial_balance_max"
+    check(b[key] <= 1e-9, f"{label}: {key} (supports against contact) {b[key]:.2e}")
     check(b["cone_excess_max"] <= 1e-9, f"{label}: |r_t| <= mu r_n at every node and increment ({b['cone_excess_max']:.2e})")
     check(b["complementarity_max"] <= 1e-9, f"{label}: r_n gap = 0 ({b['complementarity_max']:.2e})")
     check(b["gap_min"] >= -1e-9, f"{label}: no penetration ({b['gap_min']:.2e} of the interference)")
@@ -81,19 +92,29 @@ def main():
         figures[key] = {"axisymmetric_nr8": axi[key], "solid_nr3": solid[3]["summary"][key]}
         check(gap <= 1.5, f"{key}: 3D nr 3 {solid[3]['summary'][key]:.2f} K, axisymmetric {axi[key]:.2f} K (within 1.5 K)")
 
-    # 3. friction along z
-    fr = run("sleeve-3d", "mu", "-mu", "0.2")
-    invariants("sleeve-3d -mu 0.2", fr)
-    axi_fr = run("sleeve-axisymmetric", "axi2-mu", "-nr", "2", "-mu", "0.2")["summary"]
+    # 3. friction along z, then the pull-out: the whole length on its shoulder, against the axisymmetric model
+    pull_args = ("-length", "0.05", "-mu", "0.2", "-pullout", "5e-4", "-pullsteps", "5")
+    fr = run("sleeve-3d", "pull", *pull_args)
+    invariants("sleeve-3d " + " ".join(pull_args), fr)
+    axi_fr = run("sleeve-axisymmetric", "axi2-pull", "-nr", "2", *pull_args)
     s = fr["summary"]
     check(s["slip_threshold_iterations_max"] > 1, f"-mu 0.2: the slip-threshold loop iterates ({s['slip_threshold_iterations_max']})")
-    rel = (s["final_pressure_mid"] - axi_fr["final_pressure_mid"]) / axi_fr["final_pressure_mid"]
-    figures["friction"] = {"mid_3d": s["final_pressure_mid"], "mid_axisymmetric_nr2": axi_fr["final_pressure_mid"],
-                           "relative": rel}
-    check(abs(rel) <= 0.02, f"-mu 0.2: mid-length {s['final_pressure_mid'] / 1e6:.2f} MPa, axisymmetric nr 2 "
-          f"{axi_fr['final_pressure_mid'] / 1e6:.2f} MPa ({rel:+.2%}, within 2 %)")
-    check(s["final_pressure_mid"] > 1.1 * solid[2]["summary"]["final_pressure_mid"],
-          f"-mu 0.2: mid-length above the frictionless {solid[2]['summary']['final_pressure_mid'] / 1e6:.2f} MPa by > 10 %")
+    rel = (s["final_pressure_mid"] - axi_fr["summary"]["final_pressure_mid"]) / axi_fr["summary"]["final_pressure_mid"]
+    last, axi_last = fr["pullout"][-1], axi_fr["pullout"][-1]
+    F, N, F_axi = float(last["pullout_force"]), float(last["normal_force_total"]), float(axi_last["pullout_force"])
+    figures["pullout"] = {"mid_3d": s["final_pressure_mid"], "mid_axisymmetric_nr2": axi_fr["summary"]["final_pressure_mid"],
+                          "mid_relative": rel, "force_3d": F, "force_axisymmetric_nr2": F_axi,
+                          "force_relative": (F - F_axi) / F_axi, "force_over_mu_normal": [float(r["force_over_mu_normal"]) for r in fr["pullout"]],
+                          "circumferential_over_normal": [float(r["circumferential_over_normal"]) for r in fr["pullout"]]}
+    check(abs(rel) <= 5e-3, f"clamped with friction, the whole length: mid-length {s['final_pressure_mid'] / 1e6:.3f} MPa, "
+          f"axisymmetric nr 2 {axi_fr['summary']['final_pressure_mid'] / 1e6:.3f} MPa ({rel:+.2%}, within 0.5 %)")
+    plateau = abs(F - 0.2 * N) / (0.2 * N)
+    check(plateau <= 1e-8 and int(last["nodes_slipping"]) == int(last["nodes_in_contact"]) > 0,
+          f"pull-out plateau: F {F / 1e3:.3f} kN = mu N ({plateau:.1e} <= 1e-8), {last['nodes_slipping']}/"
+          f"{last['nodes_in_contact']} pressing nodes slipping")
+    check(abs(F - F_axi) <= 5e-3 * F_axi, f"pull-out force {F / 1e3:.3f} kN, axisymmetric nr 2 {F_axi / 1e3:.3f} kN "
+          f"({(F - F_axi) / F_axi:+.2%}, within 0.5 %)")
+    stage_invariants("-pullout 5e-4", s["pullout"])
 
     # 5. bending, frictionless, before any node opens (-bend 1e-3): the problem is linear, so the
     # moment grows by the same amount at every increment after the first (the first also carries the
@@ -106,7 +127,7 @@ def main():
     check(all(int(r["nodes_open"]) == 0 for r in bend0), "-bend 1e-3: no bore node opens")
     check(max(abs(x - d[0]) for x in d) <= 1e-8 * abs(d[0]),
           f"-bend 1e-3 frictionless: the moment's increments {', '.join(f'{x:.6f}' for x in d)} N m equal (linear) to 1e-8")
-    bend_invariants("-bend 1e-3", b0["summary"]["bending"])
+    stage_invariants("-bend 1e-3", b0["summary"]["bending"])
     half = b0["summary"]["final_pressure_mid"]
     quarter = solid[2]["summary"]["final_pressure_mid"]
     check(abs(half - quarter) <= 1e-3 * quarter, f"the half section's clamping: mid-length {half / 1e6:.4f} MPa, the "
@@ -115,8 +136,8 @@ def main():
     # 6. bending with friction (mu 0.2, 0.01 rad in one increment) against the frictionless one
     b1 = run("sleeve-3d", "bend-mu", "-mu", "0.2", "-bend", "1e-2", "-bendsteps", "1")["summary"]["bending"]
     f0 = run("sleeve-3d", "bend0-large", "-bend", "1e-2", "-bendsteps", "10")["summary"]["bending"]
-    bend_invariants("-mu 0.2 -bend 1e-2", b1)
-    bend_invariants("-bend 1e-2", f0)
+    stage_invariants("-mu 0.2 -bend 1e-2", b1)
+    stage_invariants("-bend 1e-2", f0)
     figures["bending_friction"] = {"moment_mu": b1["moment_final"], "moment_frictionless": f0["moment_final"],
                                    "open_mu": b1["nodes_open_final"], "sliding_mu": b1["nodes_sliding_final"]}
     check(b1["nodes_open_final"] > 0 and b1["nodes_sliding_final"] > 0,
@@ -126,7 +147,8 @@ def main():
           f"{f0['moment_final'] / 1e3:.3f} kN m, both > 0 (against the rotation)")
 
     # 4. bad input
-    for args, culprit in ((["-nt", "1"], "-nt"), (["-pipeE", "2e11"], "-pipeE"), (["-plane", "stress"], "-plane")):
+    for args, culprit in ((["-nt", "1"], "-nt"), (["-pipeE", "2e11"], "-pipeE"), (["-plane", "stress"], "-plane"),
+                          (["-pullout", "1e-4"], "-mu"), (["-mu", "0.2", "-pullout", "1e-4", "-bend", "1e-3"], "-bend")):
         _, done = run_scene_captured("sleeve-3d", "sleeve-3d-bad", *COMMON, *args)
         check(done.returncode != 0 and culprit in done.stderr + done.stdout,
               f"{' '.join(args)} refused naming {culprit} (exit {done.returncode})")
