@@ -37,6 +37,7 @@ struct PsorResult {
   int iterations = 0;
   double residual = 0.0;  // max |r_new - r_old| / max(|r|, tiny), over the last sweep
   bool converged = false;
+  int polishes = 0;       // polish attempts (psor_cone's)
 };
 
 // Natural-map residual of the contact laws: 0 exactly at a solution, scale-free.

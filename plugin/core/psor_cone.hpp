@@ -201,11 +201,15 @@ inline bool polish_cone(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, cons
 
 // Sweeps from the given r (a warm start) until the relative change of r over a sweep is <= tol
 // (measured per unit relaxation, as psor_condensed's) or maxit sweeps; with polish_every > 0 the
-// active-set polish (polish_cone) is tried every that many sweeps and ends them when it solves the
+// polish (polish_cone) is tried after polish_every sweeps and ends them when it solves the
 // problem (converged, residual = its law residual): the ring's all-active Delassus operator makes
 // the sweeps alone converge linearly at a rate set by its conditioning (200000 sweeps left a change
-// of 3e-7 on sleeve-3d's bending, measured). Throws on inconsistent input; the caller reads
-// `converged`, `iterations` and `residual`.
+// of 3e-7 on sleeve-3d's bending, measured). After each polish that fails the wait before the next
+// doubles (10, 20, 40 ... sweeps): a polish costs a dense LU per round, O(n^3) against a sweep's
+// O(n^2), and while part of the bore sticks it may fail for thousands of sweeps (sleeve-3d's
+// pull-out at L = 10 cm: 10644 sweeps, a failed polish every 10 was most of the time); doubling
+// keeps the polishes to log2 of the sweeps and adds at most as many sweeps as were already done.
+// Throws on inconsistent input; the caller reads `converged`, `iterations`, `residual`, `polishes`.
 inline PsorResult psor_cone(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, const Eigen::VectorXd& g,
                             double omega, double tol, int maxit, Eigen::VectorXd& r, int polish_every = 0) {
   const Eigen::Index m = g.size();
@@ -238,6 +242,7 @@ inline PsorResult psor_cone(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, 
   }
   PsorResult result;
   Eigen::VectorXd w = W * r - q;  // kept up to date column by column
+  long long polish_wait = polish_every, next_polish = polish_every;  // (long: doubled past maxit)
   while (result.iterations < maxit) {
     ++result.iterations;
     double change = 0.0, size = 0.0;
@@ -274,10 +279,15 @@ inline PsorResult psor_cone(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, 
     }
     // (accepted at the sweeps' own tolerance: Newton's last steps are cheap, and the slip-threshold
     // fixed point around this needs its answers to better than its own tolerance)
-    if (polish_every > 0 && result.iterations % polish_every == 0 && polish_cone(W, q, g, tol, r)) {
-      result.residual = cone_law_residual(W, q, g, r);
-      result.converged = true;
-      break;
+    if (polish_every > 0 && result.iterations == next_polish) {
+      ++result.polishes;
+      if (polish_cone(W, q, g, tol, r)) {
+        result.residual = cone_law_residual(W, q, g, r);
+        result.converged = true;
+        break;
+      }
+      if (polish_wait < maxit) polish_wait *= 2;
+      next_polish = result.iterations + polish_wait;
     }
   }
   return result;

@@ -268,6 +268,9 @@ TEST(PsorCone, PolishFinishesBadlyConditionedProblems) {
     plain_short += sma::cone_law_residual(p.W, p.q, p.g, plain) > 1e3 * 1e-10;
     ASSERT_TRUE(res.converged) << "trial " << trial;
     EXPECT_LE(res.iterations, 500) << "trial " << trial;
+    // the polishes: after 10 sweeps, then waits doubling after each failure (10, 30, 70, ...)
+    EXPECT_LE(res.polishes, 1 + std::log2(res.iterations / 10.0 + 1)) << "trial " << trial;
+    EXPECT_GE(res.polishes, 1) << "trial " << trial;
     EXPECT_LE(sma::cone_law_residual(p.W, p.q, p.g, polished), 1e-10) << "trial " << trial;
     Statuses count;
     expect_laws(p, polished, 1e-8, count);
