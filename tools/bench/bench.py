@@ -35,6 +35,8 @@ summary.json with the headline figures) and docs/benchmarks.md with its PNGs in 
  11. the elliptic scenes at the paper's scale: their default mesh's 1500 steps against rings of n x n
      with steps by -tol and -balance 2, against their 144 x 144 runs; the circular goals scaled
      (docs/benchmarks/elliptic-adaptation.md)                                 elliptic_adaptation.py
+ 12. the 3D sleeve's mechanics on ffddm over MPI: strong and weak scaling, iterations on more
+     ranks (docs/benchmarks/ffddm-sleeve-3d.md)                                 ffddm_scaling.py
 The oracles (tools/bench/oracles: closed forms, the curve metric, the scheme in numpy, GetFEM) are
 independent of the code they check: they import nothing of python/sma.
 """
@@ -46,6 +48,7 @@ import time
 import against_numpy
 import default_run
 import elliptic_adaptation
+import ffddm_scaling
 import kernels
 import mesh_adaptation
 import psor
@@ -65,7 +68,8 @@ ALONE = {"kernels": kernels.measure, "psor": psor.measure, "ring-lame": ring_lam
          "numpy": lambda results: results.update(radial_numpy=against_numpy.radial_against_numpy()),
          "time-steps": lambda results: time_steps.write_doc(time_steps.measure(results)),
          "mesh-adaptation": lambda results: mesh_adaptation.write_doc(mesh_adaptation.measure(results, quick=QUICK)),
-         "elliptic-adaptation": lambda results: elliptic_adaptation.write_doc(elliptic_adaptation.measure(results, quick=QUICK))}
+         "elliptic-adaptation": lambda results: elliptic_adaptation.write_doc(elliptic_adaptation.measure(results, quick=QUICK)),
+         "ffddm": lambda results: results.update(ffddm=ffddm_scaling.write_doc(ffddm_scaling.measure()))}
 
 
 def main():
@@ -102,6 +106,7 @@ def main():
     time_steps.write_doc(time_steps.measure(results))
     mesh_adaptation.write_doc(mesh_adaptation.measure(results, quick=QUICK), plt)
     elliptic_adaptation.write_doc(elliptic_adaptation.measure(results, quick=QUICK))
+    ffddm_scaling.write_doc(ffddm_scaling.measure())
 
     results["bench_wall_seconds"] = time.perf_counter() - bench_start
     write_json(os.path.join(OUT, "summary.json"), results)

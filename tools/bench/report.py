@@ -49,6 +49,9 @@ def write_doc(r, plt):
       "the elliptic scenes' time to accuracy against their default mesh (rings of n x n, `-balance 2`): "
       "[benchmarks/elliptic-adaptation.md](benchmarks/elliptic-adaptation.md).")
     w("")
+    w("The 3D sleeve's mechanics on FreeFEM's ffddm over MPI, strong and weak scaling, in the same run: "
+      "[benchmarks/ffddm-sleeve-3d.md](benchmarks/ffddm-sleeve-3d.md).")
+    w("")
     w("## Goals")
     w("")
     w("| goal | measured | met |")
