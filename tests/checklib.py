@@ -72,9 +72,23 @@ def files_under(folder):
     return found
 
 
+def json_strict(path):
+    """A JSON file, refused (ValueError naming the key and the file) if an object gives a key twice:
+    json keeps the last one without a word, and a reader then sees one of two values (sleeve-3d's
+    summary.json gave pipe_A twice, caught only by the plot tools' own reader)."""
+    def no_repeat(pairs):
+        keys = [k for k, _ in pairs]
+        repeated = sorted({k for k in keys if keys.count(k) > 1})
+        if repeated:
+            raise ValueError(f"{path}: the key {repeated[0]!r} is given twice")
+        return dict(pairs)
+    with open(path) as f:
+        return json.load(f, object_pairs_hook=no_repeat)
+
+
 def summary_of(out):
-    """The summary.json a scene wrote to `out`."""
-    return json.load(open(os.path.join(out, "summary.json")))
+    """The summary.json a scene wrote to `out` (json_strict)."""
+    return json_strict(os.path.join(out, "summary.json"))
 
 
 def rows(path):

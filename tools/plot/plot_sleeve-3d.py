@@ -9,6 +9,8 @@ columns: the ring-averaged pressure per layer z in bore-*.csv), drawn by plot_sl
   bend.png               (-bend > 0) the moment the joint resists with (kN m) and the bore's nodes
                          open and sliding against the pipe's rotation (mrad); the first sliding
                          and the first leak path marked
+  pullout.png            (-pullout > 0) the pull-out force against the pipe's displacement and
+                         mu N, drawn by plot_sleeve-axisymmetric.py from the same pullout.csv columns
 Usage: tools/plot/plot_sleeve-3d.py results/sleeve-3d
 """
 import importlib.util
@@ -63,6 +65,11 @@ def main():
     axisymmetric.force_temperature(outdir, summary)
     axisymmetric.bore_pressure(outdir, summary)
     bend(outdir, summary)
+    if summary.get("pullout"):
+        # the axisymmetric figure's keys, from the 3D summary's pullout object and parameters
+        pull = summary["pullout"]
+        axisymmetric.pullout(outdir, {"scene": summary["scene"], "mu": summary["parameters"]["mu"],
+                                      "pullout_force_final": pull["force_final"], "pullout_force_max": pull["force_max"]})
     print(f"figures in {outdir}/")
 
 
