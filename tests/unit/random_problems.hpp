@@ -1,4 +1,5 @@
-// Random contact problems shared by the PSOR unit tests and the Siconos oracle.
+// Random contact problems shared by the PSOR unit tests and the Siconos oracle, and random
+// symmetric matrices of given eigenvalues (the cone's polish, the step solver's linearised law).
 #pragma once
 
 #include <Eigen/Dense>
@@ -13,6 +14,18 @@ inline Eigen::MatrixXd random_spd(int n, std::mt19937& rng) {
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) A(i, j) = normal(rng);
   return A * A.transpose() + n * Eigen::MatrixXd::Identity(n, n);
+}
+
+// Q diag(eigenvalues) Q', Q the orthogonal factor of a matrix whose entries are drawn by
+// entry(rng), row by row.
+template <class Distribution>
+inline Eigen::MatrixXd random_symmetric(const Eigen::VectorXd& eigenvalues, std::mt19937& rng, Distribution& entry) {
+  const Eigen::Index n = eigenvalues.size();
+  Eigen::MatrixXd A(n, n);
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = 0; j < n; ++j) A(i, j) = entry(rng);
+  const Eigen::MatrixXd Q = Eigen::HouseholderQR<Eigen::MatrixXd>(A).householderQ();
+  return Q * eigenvalues.asDiagonal() * Q.transpose();
 }
 
 // A Tresca problem on m contact nodes: Delassus operator W (random_spd, divided by 2m when

@@ -248,15 +248,10 @@ TEST(PsorCone, PolishFinishesBadlyConditionedProblems) {
   int plain_short = 0;
   for (int trial = 0; trial < 10; ++trial) {
     const int m = 12, n = 3 * m;
-    Eigen::MatrixXd A(n, n);
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) A(i, j) = normal(rng);
-    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(A);
-    const Eigen::MatrixXd Q = qr.householderQ();
     Eigen::VectorXd eigen(n);
     for (int k = 0; k < n; ++k) eigen[k] = std::pow(10.0, -6.0 * k / (n - 1));
     ConeProblem p;
-    p.W = Q * eigen.asDiagonal() * Q.transpose();
+    p.W = sma_test::random_symmetric(eigen, rng, normal);
     p.q.resize(n);
     p.g.resize(m);
     for (int k = 0; k < n; ++k) p.q[k] = 0.01 * normal(rng);

@@ -13,6 +13,7 @@
 
 #include "core/step_newton.hpp"
 #include "radial_sleeve.hpp"
+#include "random_problems.hpp"
 
 namespace {
 
@@ -555,14 +556,9 @@ TEST(StepNewton, LinearisedLawSolvedOnAnIndefiniteBlock) {
   int solved = 0;
   for (int trial = 0; trial < 20; ++trial) {
     // M = -(S + q): symmetric, q = 1; S with eigenvalues in [-1.3, 0.7] shifted: W concave along some.
-    Eigen::MatrixXd X(k, k);
-    for (int i = 0; i < k; ++i)
-      for (int j = 0; j < k; ++j) X(i, j) = unit(rng);
-    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(X);
-    const Eigen::MatrixXd Q = qr.householderQ();
     Eigen::VectorXd eig(k);
     for (int i = 0; i < k; ++i) eig[i] = i < 3 ? -0.2 - 0.1 * i : 0.2 + 2.0 * (i + 1) / k;
-    const Eigen::MatrixXd M = -(Q * eig.asDiagonal() * Q.transpose());
+    const Eigen::MatrixXd M = -sma_test::random_symmetric(eig, rng, unit);
     const Eigen::VectorXd q = Eigen::VectorXd::Ones(k);
     Eigen::VectorXd l(k), u(k), d(k), force_at(k);
     for (int i = 0; i < k; ++i) {
