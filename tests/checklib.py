@@ -13,6 +13,7 @@ sys.path.insert(0, os.path.join(ROOT, "tools", "bench", "oracles"))
 from units import KELVIN_AT_0C  # noqa: E402,F401  (re-exported for the tests)
 from fits import r_squared  # noqa: E402,F401  (re-exported for the tests)
 from sleeve_geometry import sleeve_geometry  # noqa: E402,F401  (re-exported for the tests)
+from results_io import read_json  # noqa: E402  (tools/results_io.py: the sma package's reader)
 TEST_RESULTS = os.path.join(ROOT, "build", "test-results")
 failures = []
 
@@ -72,23 +73,11 @@ def files_under(folder):
     return found
 
 
-def json_strict(path):
-    """A JSON file, refused (ValueError naming the key and the file) if an object gives a key twice:
-    json keeps the last one without a word, and a reader then sees one of two values (sleeve-3d's
-    summary.json gave pipe_A twice, caught only by the plot tools' own reader)."""
-    def no_repeat(pairs):
-        keys = [k for k, _ in pairs]
-        repeated = sorted({k for k in keys if keys.count(k) > 1})
-        if repeated:
-            raise ValueError(f"{path}: the key {repeated[0]!r} is given twice")
-        return dict(pairs)
-    with open(path) as f:
-        return json.load(f, object_pairs_hook=no_repeat)
-
-
 def summary_of(out):
-    """The summary.json a scene wrote to `out` (json_strict)."""
-    return json_strict(os.path.join(out, "summary.json"))
+    """The summary.json a scene wrote to `out`, read as the plot tools read it (sma.results_io
+    read_json): a key given twice, NaN or a value that is not an object is refused, naming the file
+    (python's json keeps the last of two keys without a word: sleeve-3d's summary gave pipe_A twice)."""
+    return read_json(os.path.join(out, "summary.json"))
 
 
 def rows(path):
