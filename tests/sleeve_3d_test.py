@@ -46,7 +46,9 @@ model, which solves the same problem (issue 49, its first check).
    to sleeve-elliptic-friction's at an order in [1.6, 2.4] (within 0.4 % at (3, 12)); the tangential
    traction under 1 % of the pressure, and on the round pipe 0 (1e-9 of the pressure: the mesh's cuts
    are mirror-symmetric about every grid line theta_j, so a radial load moves no bore node around the
-   ring; solid-3d.idp Solid3dMeshBuild). The pull-out's circumferential reactions likewise (1e-8).
+   ring; solid-3d.idp Solid3dMeshBuild). The pull-out's circumferential reactions likewise (1e-8),
+   also while part of the bore sticks (-pullout 4e-5 -pullsteps 2: the nodes on the plane x = 0
+   exactly on it).
 Writes results/checks/sleeve_3d.json.
 """
 import math
@@ -157,6 +159,15 @@ def main():
     stage_invariants("-pullout 5e-4", s["pullout"])
     check(s["pullout"]["circumferential_over_normal_max"] <= 1e-8, f"-pullout 5e-4: the circumferential reactions at most "
           f"{s['pullout']['circumferential_over_normal_max']:.2e} of the largest (0 by symmetry) at every increment")
+    # ... and while part of the bore sticks (2e-5 m increments): the sticking nodes on the plane x = 0 once had a
+    # circumferential direction 6e-17 off their held u_x (cos(pi / 2)), which the cone took for a free motion: 8.7 %
+    stick = run("sleeve-3d", "pull-stick", "-length", "0.05", "-mu", "0.2", "-pullout", "4e-5", "-pullsteps", "2")
+    first = stick["pullout"][0]
+    worst = max(float(r["circumferential_over_normal"]) for r in stick["pullout"])
+    check(int(first["nodes_slipping"]) < int(first["nodes_in_contact"]) and worst <= 1e-8,
+          f"-pullout 4e-5 -pullsteps 2: {first['nodes_slipping']} of {first['nodes_in_contact']} nodes slipping at the first "
+          f"increment, the circumferential reactions at most {worst:.2e} of the largest (0 by symmetry)")
+    stage_invariants("-pullout 4e-5", stick["summary"]["pullout"])
 
     # 5. bending, frictionless, before any node opens (-bend 1e-3): the problem is linear, so the
     # moment grows by the same amount at every increment after the first (the first also carries the
