@@ -235,6 +235,16 @@ inline PsorResult psor_cone(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, 
       throw std::invalid_argument("psor_cone: both tangential motions blocked (Delassus tangential diagonals 0) at "
                                   "contact node " + std::to_string(i) + " with slip threshold " + psor_detail::number(g[i]) +
                                   " (needs threshold 0)");
+    // A tangential compliance not 0 but round-off beside the normal's is a motion a support holds,
+    // rounded away from exact (a node 6e-17 off its symmetry plane gave 4e-33 of it: sleeve-3d's
+    // pull-out, docs/measurements.md#m-sleeve-3d-pullout); its reaction would be anything in the
+    // disk. Refused, naming the node: such a motion must be held exactly (its row of W 0).
+    for (Eigen::Index c = 1; c <= 2; ++c)
+      if (W(n + c, n + c) > 0.0 && W(n + c, n + c) <= 1e-12 * W(n, n))
+        throw std::invalid_argument("psor_cone: tangential compliance " + psor_detail::number(W(n + c, n + c) / W(n, n)) +
+                                    " of the normal's at contact node " + std::to_string(i) + " (tangent " +
+                                    std::to_string(c) + "): a motion a support holds but for round-off (a node off "
+                                    "its symmetry plane?); hold it exactly (its row of W 0)");
     if (!(W(n + 1, n + 1) >= 0.0 && W(n + 2, n + 2) >= 0.0) ||
         (!blocked1 && !blocked2 && !(W.block<2, 2>(n + 1, n + 1).determinant() > 0.0)))
       throw std::invalid_argument("psor_cone: the tangential 2 x 2 block of the Delassus operator is not positive "

@@ -238,6 +238,35 @@ TEST(PsorCone, RefusesInconsistentInput) {
   EXPECT_EQ(r[5], 0.0);
 }
 
+// A tangential motion held but for round-off (a row of H 6e-17 on a free dof beside its held one:
+// sleeve-3d's nodes 6e-17 off the plane x = 0, whose compliance 4e-33 the sweeps took for a free
+// motion and whose reaction was then anything in the disk) is refused, naming the node and tangent;
+// at 1e-6 of the normal's compliance (a stiff but real motion) it is solved.
+TEST(PsorCone, RefusesARoundOffCompliance) {
+  std::mt19937 rng(5);
+  ConeProblem p = random_cone(3, 0.5, rng);
+  for (double tiny : {4e-33, 1e-13}) {
+    ConeProblem q = p;
+    const double scale = std::sqrt(tiny / q.W(7, 7));  // node 2's first tangent, its row scaled down
+    q.W.row(7) *= scale;
+    q.W.col(7) *= scale;
+    Eigen::VectorXd r = Eigen::VectorXd::Zero(9);
+    try {
+      sma::psor_cone(q.W, q.q, q.g, 1.0, 1e-10, 10, r);
+      ADD_FAILURE() << "a tangential compliance of " << q.W(7, 7) / q.W(6, 6) << " of the normal's was accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("contact node 2 (tangent 1)"), std::string::npos) << e.what();
+    }
+  }
+  ConeProblem stiff = p;
+  const double scale = std::sqrt(1e-6 * stiff.W(6, 6) / stiff.W(7, 7));
+  stiff.W.row(7) *= scale;
+  stiff.W.col(7) *= scale;
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(9);
+  EXPECT_TRUE(sma::psor_cone(stiff.W, stiff.q, stiff.g, 1.0, 1e-10, 200000, r, 10).converged);
+  EXPECT_LE(sma::cone_law_residual(stiff.W, stiff.q, stiff.g, r), 1e-8);
+}
+
 // The polish (a semismooth Newton method on the natural map) finishes what the sweeps alone take
 // long to: on badly conditioned problems (W's eigenvalues from 1e-6 to 1) the sweeps with the
 // polish every 10 reach a law residual of 1e-10 in at most 500 sweeps, satisfying every law, where
