@@ -12,7 +12,7 @@ model, which solves the same problem (issue 49, its first check).
 2. Invariants on every run: equilibrium of the sleeve (K u - B s = H' r on the free dofs, 1e-9),
    no penetration, complementarity and the cone at every bore node (1e-9), the discrete heat
    balance at round-off, all austenite at the end.
-3. Friction along z and the pull-out (-length 0.05 -mu 0.2 -pullout 5e-4 -pullsteps 5: the whole
+3. Friction along z and the pull-out (-length 0.05 -mu 0.2 -pullout 1.2e-4 -pullsteps 3: the whole
    length, its end face z = 0 held axially, the pipe moved towards it), against sleeve-axisymmetric
    with the same options at nr 2: the clamping's invariants with friction (the cone at every node,
    the held face's axial force balancing the pipe's friction, 1e-9 of the normal force, the
@@ -47,8 +47,7 @@ model, which solves the same problem (issue 49, its first check).
    traction under 1 % of the pressure, and on the round pipe 0 (1e-9 of the pressure: the mesh's cuts
    are mirror-symmetric about every grid line theta_j, so a radial load moves no bore node around the
    ring; solid-3d.idp Solid3dMeshBuild). The pull-out's circumferential reactions likewise (1e-8),
-   also while part of the bore sticks (-pullout 4e-5 -pullsteps 2: the nodes on the plane x = 0
-   exactly on it).
+   also while part of the bore sticks (its first increment: the nodes on the plane x = 0 exactly on it).
 Writes results/checks/sleeve_3d.json.
 """
 import math
@@ -135,7 +134,8 @@ def main():
           f"{effectivity:.2f} in [1, 3] (order 1 assumed, errs high)")
 
     # 3. friction along z, then the pull-out: the whole length on its shoulder, against the axisymmetric model
-    pull_args = ("-length", "0.05", "-mu", "0.2", "-pullout", "5e-4", "-pullsteps", "5")
+    # (4e-5 m increments: part of the bore sticks at the first, all of it slides at the third)
+    pull_args = ("-length", "0.05", "-mu", "0.2", "-pullout", "1.2e-4", "-pullsteps", "3")
     fr = run("sleeve-3d", "pull", *pull_args)
     invariants("sleeve-3d " + " ".join(pull_args), fr)
     axi_fr = run("sleeve-axisymmetric", "axi2-pull", "-nr", "2", *pull_args)
@@ -156,18 +156,16 @@ def main():
           f"{last['nodes_in_contact']} pressing nodes slipping")
     check(abs(F - F_axi) <= 5e-3 * F_axi, f"pull-out force {F / 1e3:.3f} kN, axisymmetric nr 2 {F_axi / 1e3:.3f} kN "
           f"({(F - F_axi) / F_axi:+.2%}, within 0.5 %)")
-    stage_invariants("-pullout 5e-4", s["pullout"])
-    check(s["pullout"]["circumferential_over_normal_max"] <= 1e-8, f"-pullout 5e-4: the circumferential reactions at most "
-          f"{s['pullout']['circumferential_over_normal_max']:.2e} of the largest (0 by symmetry) at every increment")
-    # ... and while part of the bore sticks (2e-5 m increments): the sticking nodes on the plane x = 0 once had a
-    # circumferential direction 6e-17 off their held u_x (cos(pi / 2)), which the cone took for a free motion: 8.7 %
-    stick = run("sleeve-3d", "pull-stick", "-length", "0.05", "-mu", "0.2", "-pullout", "4e-5", "-pullsteps", "2")
-    first = stick["pullout"][0]
-    worst = max(float(r["circumferential_over_normal"]) for r in stick["pullout"])
-    check(int(first["nodes_slipping"]) < int(first["nodes_in_contact"]) and worst <= 1e-8,
-          f"-pullout 4e-5 -pullsteps 2: {first['nodes_slipping']} of {first['nodes_in_contact']} nodes slipping at the first "
-          f"increment, the circumferential reactions at most {worst:.2e} of the largest (0 by symmetry)")
-    stage_invariants("-pullout 4e-5", stick["summary"]["pullout"])
+    stage_invariants("-pullout 1.2e-4", s["pullout"])
+    # the circumferential reactions, 0 by symmetry, also while part of the bore sticks: the sticking nodes on the
+    # plane x = 0 once had a circumferential direction 6e-17 off their held u_x (cos(pi / 2)), which the cone took
+    # for a free motion (9 %; psor_cone now refuses such a compliance)
+    first = fr["pullout"][0]
+    check(int(first["nodes_slipping"]) < int(first["nodes_in_contact"])
+          and s["pullout"]["circumferential_over_normal_max"] <= 1e-8,
+          f"-pullout 1.2e-4: {first['nodes_slipping']} of {first['nodes_in_contact']} nodes slipping at the first increment; "
+          f"the circumferential reactions at most {s['pullout']['circumferential_over_normal_max']:.2e} of the largest "
+          f"(0 by symmetry) at every increment")
 
     # 5. bending, frictionless, before any node opens (-bend 1e-3): the problem is linear, so the
     # moment grows by the same amount at every increment after the first (the first also carries the
