@@ -168,8 +168,8 @@ def main():
           f"(0 by symmetry) at every increment")
 
     # 5. bending, frictionless, before any node opens (-bend 1e-3): the problem is linear, so the
-    # moment grows by the same amount at every increment after the first (the first also carries the
-    # clamped state's own moment: the half section's mesh is not mirror-symmetric about x = 0)
+    # moment grows by the same amount at every increment (the clamped state carries no moment of its
+    # own: the half section's cuts are mirror-symmetric about x = 0)
     b0 = run("sleeve-3d", "bend0", "-bend", "1e-3", "-bendsteps", "4")
     bend0 = rows(os.path.join(os.path.dirname(HERE), "build", "test-results", "sleeve-3d-bend0", "bend.csv"))
     steps = [float(r["moment"]) for r in bend0]
@@ -214,13 +214,14 @@ def main():
     ell = run_scene("sleeve-elliptic", "sleeve-3d-elliptic-2d", *COMMON, "-scale", "paper", "-tol", "1e-2")
     nodes = rows(os.path.join(ell, "contact-final.csv"))
 
-    def weighted(weight):
-        force = sum(float(r["normal_force"]) * weight(float(r["x"]), float(r["y"])) for r in nodes)
+    def weighted(nodes, weight, column="normal_force"):
+        """A 2D run's contact-final.csv: |column| over the tributary lengths, both weighted per node."""
+        force = sum(abs(float(r[column])) * weight(float(r["x"]), float(r["y"])) for r in nodes)
         return force / sum(float(r["tributary_length"]) * weight(float(r["x"]), float(r["y"])) for r in nodes)
 
-    plane2d = {"final_pressure_mid": weighted(lambda x, y: 1.0),
-               "final_pressure_mid_x": weighted(lambda x, y: abs(x) / math.hypot(x, y)),
-               "final_pressure_mid_y": weighted(lambda x, y: abs(y) / math.hypot(x, y))}
+    plane2d = {"final_pressure_mid": weighted(nodes, lambda x, y: 1.0),
+               "final_pressure_mid_x": weighted(nodes, lambda x, y: abs(x) / math.hypot(x, y)),
+               "final_pressure_mid_y": weighted(nodes, lambda x, y: abs(y) / math.hypot(x, y))}
     figures["plane_strain_elliptic"] = {"sleeve_elliptic": plane2d}
     for key, ref in plane2d.items():
         d = [held["0.0505", nr][key] - ref for nr, _ in meshes]
@@ -244,9 +245,9 @@ def main():
         check(fr[nr]["summary"]["contact_tangent"] == "e_theta", f"-ends held -mu 0.2 nr {nr}: the bore's tangent e_theta "
               f"({fr[nr]['summary']['contact_tangent']})")
     ell_fr = run_scene("sleeve-elliptic-friction", "sleeve-3d-elliptic-friction-2d", *COMMON, "-scale", "paper", "-tol", "1e-2")
-    nodes = rows(os.path.join(ell_fr, "contact-final.csv"))
-    ref = weighted(lambda x, y: 1.0)
-    traction2d = sum(abs(float(r["tangential_force"])) for r in nodes) / sum(float(r["tributary_length"]) for r in nodes)
+    nodes_fr = rows(os.path.join(ell_fr, "contact-final.csv"))
+    ref = weighted(nodes_fr, lambda x, y: 1.0)
+    traction2d = weighted(nodes_fr, lambda x, y: 1.0, "tangential_force")
     d = [fr[nr]["summary"]["final_pressure_mid"] - ref for nr, _ in meshes]
     order = math.log(abs(d[0] / d[1])) / math.log(1.5) if d[1] != 0 else float("inf")
     figures["plane_strain_elliptic_friction"] = {"sleeve_elliptic_friction": ref, "differences": d, "order": order}
