@@ -58,7 +58,8 @@ FASTCLOCK := plugin/build/fastclock.so
 RESULTS_TOOL := plugin/build/sma-results
 # Out of memory ends a run with one error line (exit 12), preloaded by tools/ff (plugin/oomguard.c says why).
 OOMGUARD := plugin/build/oomguard.so
-# ffddm's scripts load "MUMPS_mpi", which Debian's FreeFEM lacks: a stand-in (plugin/ffddm/MUMPS_mpi.cpp says why).
+# ffddm's scripts load "MUMPS_mpi", which Debian's FreeFEM lacks: a stand-in, UMFPACK on one rank for GenEO's
+# coarse problem (plugin/ffddm/MUMPS_mpi.cpp says why).
 FFDDM_STUB := plugin/build/ffddm/MUMPS_mpi.so
 
 # gmsh meshes (MSH 2.2: FreeFEM's gmshload does not read MSH 4): meshes/<geo>-<level>.msh is
@@ -160,7 +161,7 @@ plugin-files: $(PLUGIN) $(FASTCLOCK) $(RESULTS_TOOL) $(OOMGUARD) $(FFDDM_STUB)
 	@:
 $(FFDDM_STUB): plugin/ffddm/MUMPS_mpi.cpp
 	@mkdir -p plugin/build/ffddm
-	@cd plugin/build/ffddm && ff-c++ ../../ffddm/MUMPS_mpi.cpp > build.log 2>&1 \
+	@cd plugin/build/ffddm && ff-c++ ../../ffddm/MUMPS_mpi.cpp -DHAVE_LIBUMFPACK -DHAVE_SUITESPARSE_UMFPACK_H -lumfpack > build.log 2>&1 \
 	  || { cat build.log; echo "error: building $@ failed (plugin/build/ffddm/build.log)" >&2; exit 1; }
 $(RESULTS_TOOL): plugin/results_tool.cpp plugin/core/files.hpp
 	@mkdir -p plugin/build

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The 3D sleeve's mechanics solve on FreeFEM's ffddm over MPI (tools/bench/ffddm_sleeve_3d.edp,
-one-level RAS and GMRES; docs/benchmarks/ffddm-sleeve-3d.md), on the default 3D mesh's size
-(nr 2, nt 8, nz 10: 891 dofs).
+RAS and GMRES, with one level and with GenEO's coarse space; docs/benchmarks/ffddm-sleeve-3d.md),
+on the default 3D mesh's size (nr 2, nt 8, nz 10: 891 dofs).
 
 - Against the exact solution: the quarter ring loaded by a uniform phase stress, free of contact,
   dilates freely, u = e (x, y, z) with e = s / (3 lambda + 2 mu), which P1 holds exactly: on one
@@ -9,8 +9,23 @@ one-level RAS and GMRES; docs/benchmarks/ffddm-sleeve-3d.md), on the default 3D 
   two subdomains, GMRES at 1e-8 leaves at most 1e-6 of it, after more than one iteration.
 - MPI equality: the two solutions, each within that of the exact one, agree to 2e-6.
 - The direct solve (UMFPACK, one rank) on the same operator: round-off (1e-11).
+- GenEO (two levels; its coarse problem on plugin/ffddm/MUMPS_mpi.cpp's stand-in, UMFPACK on one
+  rank): on two ranks a coarse space of some vectors, the same error bound and MPI equality, in
+  fewer iterations than one level (the coarse space is used, not only built: 8 against 24).
+- The contact condensed onto the bore through ffddm (tools/bench/ffddm_contact_3d.edp: the ring in
+  austenite, ends held, on the rigid round pipe, W = H K^-1 H' from one distributed solve a bore
+  node, PSOR on W): every bore node pressing, the laws at every node (gap >= -1e-8 of the
+  interference, r gap <= 1e-8), the mean pressure within 1 % of Lame's plane-strain ring (0.4 % at
+  nr 2, nt 8), and the reactions on 2 ranks equal to 1 rank's and to the sequential direct
+  solve's to 1e-6 of the largest (GMRES at 1e-10). Two layers (243 dofs): one level, since
+  ARPACK fails in GenEO's eigenproblems on subdomains this small (measured: NO_SHIFTS_APPLIED).
+- The stand-in refuses a coarse problem spread over two ranks (-ffddm_master_p 2): exit non-zero
+  within 60 s, every rank stopped (MPI_Abort: a rank's FreeFEM error alone left the others
+  waiting), the message naming the stand-in and the way out.
 Writes results/checks/ffddm_3d.json.
 """
+import subprocess
+import time
 import os
 import sys
 
@@ -19,7 +34,38 @@ sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "tools", "bench"))
 
 from checklib import check, finish, record  # noqa: E402
-from ffddm_scaling import solve  # noqa: E402
+from ffddm_scaling import CONTACT_SCRIPT, SCRIPT, ffddm_environment, solve  # noqa: E402
+
+
+def ranks_alive(session, wait=5.0):
+    """Whether a process of the session still runs `wait` seconds after mpiexec's exit (the ranks,
+    once killed, are zombies until the system reaps them: not counted)."""
+    deadline = time.monotonic() + wait
+    while True:
+        states = subprocess.run(["ps", "-o", "stat=", "-s", str(session)], capture_output=True, text=True).stdout.split()
+        if not any(not state.startswith("Z") for state in states) or time.monotonic() > deadline:
+            return any(not state.startswith("Z") for state in states)
+        time.sleep(0.2)
+
+
+def refused_coarse_problem():
+    """ffddm_sleeve_3d.edp on 2 ranks with GenEO's coarse problem on both (-ffddm_master_p 2): the
+    exit code, the seconds, the stand-in's error lines and whether a rank outlived mpiexec."""
+    cmd = ["mpiexec", "--oversubscribe", "-np", "2", "FreeFem++-mpi", "-nw", "-ne", SCRIPT, "-v", "0",
+           "-ffddm_verbosity", "0", "-nr", "2", "-nt", "8", "-nz", "10", "-geneo", "1", "-ffddm_master_p", "2"]
+    start = time.monotonic()
+    run = subprocess.Popen(cmd, env=ffddm_environment(), stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                           text=True, start_new_session=True)
+    try:
+        output, _ = run.communicate(timeout=60)
+    except subprocess.TimeoutExpired:
+        os.killpg(run.pid, 9)
+        output, _ = run.communicate()
+        return {"exit": None, "seconds": time.monotonic() - start, "errors": [], "left_running": True}
+    seconds = time.monotonic() - start
+    left = ranks_alive(run.pid)
+    errors = [line for line in output.splitlines() if line.startswith("error: MUMPS stand-in")]
+    return {"exit": run.returncode, "seconds": seconds, "errors": errors, "left_running": left}
 
 
 def main():
@@ -33,7 +79,44 @@ def main():
     check(one["relative_error"] + two["relative_error"] <= 2e-6,
           f"MPI equality: 1 and 2 ranks within {one['relative_error'] + two['relative_error']:.1e} of each other (<= 2e-6)")
     check(0 <= one["direct_relative_error"] <= 1e-11, f"the direct solve: error {one['direct_relative_error']:.1e} (<= 1e-11)")
-    record("ffddm_3d", {"one_rank": one, "two_ranks": two})
+    geneo_one = solve(1, 2, 8, 10, geneo=True, timeout=300)
+    geneo_two = solve(2, 2, 8, 10, geneo=True, timeout=300)
+    check(geneo_one["relative_error"] <= 1e-11 and geneo_one["iterations"] == 1,
+          f"GenEO, one rank: error {geneo_one['relative_error']:.1e} (<= 1e-11) in {geneo_one['iterations']} iteration")
+    check(geneo_two["coarse_space"] > 0 and geneo_two["relative_error"] <= 1e-6,
+          f"GenEO, two ranks: coarse space {geneo_two['coarse_space']} (> 0), error {geneo_two['relative_error']:.1e} "
+          "(<= 1e-6)")
+    check(geneo_one["relative_error"] + geneo_two["relative_error"] <= 2e-6,
+          f"GenEO's MPI equality: 1 and 2 ranks within {geneo_one['relative_error'] + geneo_two['relative_error']:.1e} "
+          "of each other (<= 2e-6)")
+    check(1 < geneo_two["iterations"] < two["iterations"],
+          f"GenEO's coarse space at work: {geneo_two['iterations']} iterations on two ranks against one level's "
+          f"{two['iterations']}")
+    contact_one = solve(1, 2, 8, 2, direct=True, tol=1e-10, timeout=300, script=CONTACT_SCRIPT)
+    contact_two = solve(2, 2, 8, 2, direct=True, tol=1e-10, timeout=300, script=CONTACT_SCRIPT)
+    for name, run in (("1 rank", contact_one), ("2 ranks", contact_two)):
+        check(run["pressing"] == run["bore_nodes"] > 0 and run["gap_min"] >= -1e-8 and run["complementarity_max"] <= 1e-8,
+              f"contact through ffddm, {name}: {run['pressing']} of {run['bore_nodes']} bore nodes pressing, gap min "
+              f"{run['gap_min']:.1e} of the interference (>= -1e-8), r gap {run['complementarity_max']:.1e} (<= 1e-8)")
+        check(abs(run["pressure_mean"] / run["pressure_lame"] - 1) <= 0.01,
+              f"contact through ffddm, {name}: mean pressure {run['pressure_mean'] / 1e6:.4f} MPa against Lame's "
+              f"{run['pressure_lame'] / 1e6:.4f} (within 1 %)")
+        check(0 <= run["direct_difference"] <= 1e-6,
+              f"contact through ffddm, {name}: the reactions as the direct solve's to {run['direct_difference']:.1e} "
+              "of the largest (<= 1e-6)")
+    ranks_difference = max(abs(a - b) for a, b in zip(contact_one["reactions"], contact_two["reactions"])) / max(
+        contact_one["reactions"])
+    check(len(contact_one["reactions"]) == len(contact_two["reactions"]) and ranks_difference <= 1e-6,
+          f"contact's MPI equality: the reactions on 1 and 2 ranks within {ranks_difference:.1e} of the largest (<= 1e-6)")
+    refused = refused_coarse_problem()
+    check(refused["exit"] not in (None, 0) and refused["errors"] and not refused["left_running"],
+          f"a coarse problem on 2 ranks (-ffddm_master_p 2) refused: exit {refused['exit']} in {refused['seconds']:.1f} s "
+          f"(limit 60), {len(refused['errors'])} stand-in error lines, ranks left running: {refused['left_running']}")
+    check(all("-ffddm_master_p 1" in line for line in refused["errors"]),
+          "the refusal names the way out (-ffddm_master_p 1)")
+    record("ffddm_3d", {"one_rank": one, "two_ranks": two, "geneo_one_rank": geneo_one, "geneo_two_ranks": geneo_two,
+                        "contact_one_rank": contact_one, "contact_two_ranks": contact_two,
+                        "contact_ranks_difference": ranks_difference, "refused_coarse_problem": refused})
     finish()
 
 

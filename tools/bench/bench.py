@@ -35,8 +35,8 @@ summary.json with the headline figures) and docs/benchmarks.md with its PNGs in 
  11. the elliptic scenes at the paper's scale: their default mesh's 1500 steps against rings of n x n
      with steps by -tol and -balance 2, against their 144 x 144 runs; the circular goals scaled
      (docs/benchmarks/elliptic-adaptation.md)                                 elliptic_adaptation.py
- 12. the 3D sleeve's mechanics on ffddm over MPI: strong and weak scaling, iterations on more
-     ranks (docs/benchmarks/ffddm-sleeve-3d.md)                                 ffddm_scaling.py
+ 12. the 3D sleeve's mechanics on ffddm over MPI, one level and GenEO: strong and weak scaling,
+     iterations on more ranks (docs/benchmarks/ffddm-sleeve-3d.md)             ffddm_scaling.py
 The oracles (tools/bench/oracles: closed forms, the curve metric, the scheme in numpy, GetFEM) are
 independent of the code they check: they import nothing of python/sma.
 """
