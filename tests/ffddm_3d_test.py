@@ -17,7 +17,8 @@ on the default 3D mesh's size (nr 2, nt 8, nz 10: 891 dofs).
   node, PSOR on W): every bore node pressing, the laws at every node (gap >= -1e-8 of the
   interference, r gap <= 1e-8), the mean pressure within 1 % of Lame's plane-strain ring (0.4 % at
   nr 2, nt 8), and the reactions on 2 ranks equal to 1 rank's and to the sequential direct
-  solve's to 1e-6 of the largest (GMRES at 1e-10). Two layers (243 dofs): one level, since
+  solve's to 1e-6 of the largest (GMRES at 1e-10). The dual solve (-dual 1: MPRGP, each product
+  W p one distributed solve, no W built) on 2 ranks gives the same reactions to 1e-6. Two layers (243 dofs): one level, since
   ARPACK fails in GenEO's eigenproblems on subdomains this small (measured: NO_SHIFTS_APPLIED).
 - The stand-in refuses a coarse problem spread over two ranks (-ffddm_master_p 2): exit non-zero
   within 60 s, every rank stopped (MPI_Abort: a rank's FreeFEM error alone left the others
@@ -104,6 +105,14 @@ def main():
         check(0 <= run["direct_difference"] <= 1e-6,
               f"contact through ffddm, {name}: the reactions as the direct solve's to {run['direct_difference']:.1e} "
               "of the largest (<= 1e-6)")
+    dual_two = solve(2, 2, 8, 2, tol=1e-10, timeout=300, script=CONTACT_SCRIPT, extra=("-dual", "1"))
+    dual_difference = max(abs(a - b) for a, b in zip(contact_one["reactions"], dual_two["reactions"])) / max(
+        contact_one["reactions"])
+    check(dual_two["dual"] == 1 and dual_two["pressing"] == dual_two["bore_nodes"] and dual_difference <= 1e-6
+          and dual_two["complementarity_max"] <= 1e-8 and dual_two["gap_min"] >= -1e-8,
+          f"the dual solve (MPRGP, no W built) on 2 ranks: {dual_two['contact_solves']} solves, the reactions as the "
+          f"condensed PSOR's on 1 rank to {dual_difference:.1e} of the largest (<= 1e-6), the laws to "
+          f"{max(dual_two['complementarity_max'], -dual_two['gap_min']):.1e}")
     ranks_difference = max(abs(a - b) for a, b in zip(contact_one["reactions"], contact_two["reactions"])) / max(
         contact_one["reactions"])
     check(len(contact_one["reactions"]) == len(contact_two["reactions"]) and ranks_difference <= 1e-6,
@@ -116,7 +125,7 @@ def main():
           "the refusal names the way out (-ffddm_master_p 1)")
     record("ffddm_3d", {"one_rank": one, "two_ranks": two, "geneo_one_rank": geneo_one, "geneo_two_ranks": geneo_two,
                         "contact_one_rank": contact_one, "contact_two_ranks": contact_two,
-                        "contact_ranks_difference": ranks_difference, "refused_coarse_problem": refused})
+                        "contact_ranks_difference": ranks_difference, "dual_two_ranks": dual_two, "dual_difference": dual_difference, "refused_coarse_problem": refused})
     finish()
 
 
