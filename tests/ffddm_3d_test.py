@@ -24,7 +24,8 @@ on the default 3D mesh's size (nr 2, nt 8, nz 10: 891 dofs).
   ARPACK fails in GenEO's eigenproblems on subdomains this small (measured: NO_SHIFTS_APPLIED).
 - The stand-in refuses a coarse problem spread over two ranks (-ffddm_master_p 2): exit non-zero
   within 60 s, every rank stopped (MPI_Abort: a rank's FreeFEM error alone left the others
-  waiting), the message naming the stand-in and the way out.
+  waiting), the message naming the stand-in and the way out. GenEO on subdomains too small for its
+  eigenproblems (ARPACK fails on one rank): the tool's catch stops every rank, within 60 s.
 Writes results/checks/ffddm_3d.json.
 """
 import subprocess
@@ -51,11 +52,11 @@ def ranks_alive(session, wait=5.0):
         time.sleep(0.2)
 
 
-def refused_coarse_problem():
-    """ffddm_sleeve_3d.edp on 2 ranks with GenEO's coarse problem on both (-ffddm_master_p 2): the
-    exit code, the seconds, the stand-in's error lines and whether a rank outlived mpiexec."""
-    cmd = ["mpiexec", "--oversubscribe", "-np", "2", "FreeFem++-mpi", "-nw", "-ne", SCRIPT, "-v", "0",
-           "-ffddm_verbosity", "0", "-nr", "2", "-nt", "8", "-nz", "10", "-geneo", "1", "-ffddm_master_p", "2"]
+def stopped_run(script, options, message):
+    """`script` on 2 ranks with `options`, a run that must fail on some rank: the exit code, the
+    seconds, the error lines starting with `message` and whether a rank outlived mpiexec."""
+    cmd = ["mpiexec", "--oversubscribe", "-np", "2", "FreeFem++-mpi", "-nw", "-ne", script, "-v", "0",
+           "-ffddm_verbosity", "0", *options]
     start = time.monotonic()
     run = subprocess.Popen(cmd, env=ffddm_environment(), stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                            text=True, start_new_session=True)
@@ -67,7 +68,7 @@ def refused_coarse_problem():
         return {"exit": None, "seconds": time.monotonic() - start, "errors": [], "left_running": True}
     seconds = time.monotonic() - start
     left = ranks_alive(run.pid)
-    errors = [line for line in output.splitlines() if line.startswith("error: MUMPS stand-in")]
+    errors = [line for line in output.splitlines() if line.startswith(message)]
     return {"exit": run.returncode, "seconds": seconds, "errors": errors, "left_running": left}
 
 
@@ -131,16 +132,23 @@ def main():
         contact_one["reactions"])
     check(len(contact_one["reactions"]) == len(contact_two["reactions"]) and ranks_difference <= 1e-6,
           f"contact's MPI equality: the reactions on 1 and 2 ranks within {ranks_difference:.1e} of the largest (<= 1e-6)")
-    refused = refused_coarse_problem()
+    refused = stopped_run(SCRIPT, ["-nr", "2", "-nt", "8", "-nz", "10", "-geneo", "1", "-ffddm_master_p", "2"],
+                          "error: MUMPS stand-in")
     check(refused["exit"] not in (None, 0) and refused["errors"] and not refused["left_running"],
           f"a coarse problem on 2 ranks (-ffddm_master_p 2) refused: exit {refused['exit']} in {refused['seconds']:.1f} s "
           f"(limit 60), {len(refused['errors'])} stand-in error lines, ranks left running: {refused['left_running']}")
     check(all("-ffddm_master_p 1" in line for line in refused["errors"]),
           "the refusal names the way out (-ffddm_master_p 1)")
+    # GenEO on subdomains too small for its eigenproblems (243 dofs on 2 ranks, 20 vectors): ARPACK
+    # fails on one rank; the tool catches it and stops every rank
+    failed = stopped_run(CONTACT_SCRIPT, ["-nz", "2", "-geneo", "1"], "error: ffddm_contact_3d: GenEO's coarse space failed")
+    check(failed["exit"] not in (None, 0) and failed["errors"] and not failed["left_running"],
+          f"GenEO failing on one rank stops them all: exit {failed['exit']} in {failed['seconds']:.1f} s (limit 60), "
+          f"{len(failed['errors'])} error lines, ranks left running: {failed['left_running']}")
     record("ffddm_3d", {"one_rank": one, "two_ranks": two, "geneo_one_rank": geneo_one, "geneo_two_ranks": geneo_two,
                         "contact_one_rank": contact_one, "contact_two_ranks": contact_two,
                         "contact_ranks_difference": ranks_difference, "dual_two_ranks": dual_two, "dual_difference": dual_difference, "oval": oval, "oval_dual": oval_dual,
-                        "oval_difference": oval_difference, "refused_coarse_problem": refused})
+                        "oval_difference": oval_difference, "refused_coarse_problem": refused, "geneo_failure": failed})
     finish()
 
 

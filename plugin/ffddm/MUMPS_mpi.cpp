@@ -9,7 +9,9 @@
 // factorisation on one rank's own communicator. A matrix whose communicator spans several ranks
 // (-ffddm_master_p > 1: each rank holds some rows) is refused by name: UMFPACK on one rank's rows
 // would be a wrong answer, not a slow one. The local factorisations keep FreeFEM's default
-// sparse solver (UMFPACK): "MUMPS" is not made the default.
+// sparse solver (UMFPACK): "MUMPS" is not made the default. It also gives the scripts
+// MpiAbortAll(code), to stop every rank after an error one rank caught (try/catch): FreeFEM's own
+// error path leaves the other ranks waiting for ever.
 // Built by the Makefile into plugin/build/ffddm/ (docs/benchmarks/ffddm-sleeve-3d.md).
 #include "ff++.hpp"
 #include "SparseLinearSolver.hpp"
@@ -36,6 +38,18 @@ int CommunicatorRanks(const Data_Sparse_Solver& ds) {
   return ranks;
 }
 
+// MPI_Abort on MPI_COMM_WORLD with `code` (no MPI in the process: exit). Every rank stops: a rank
+// that failed alone would wait in MPI_Finalize and the others in their next collective call.
+void AbortAllRanks(int code) {
+  using Abort = int (*)(void*, int);
+  void* abortSymbol = dlsym(RTLD_DEFAULT, "MPI_Abort");
+  void* world = dlsym(RTLD_DEFAULT, "ompi_mpi_comm_world");
+  std::cout.flush();
+  std::cerr.flush();
+  if (abortSymbol && world) reinterpret_cast<Abort>(abortSymbol)(world, code);
+  std::exit(code);
+}
+
 class MumpsStandIn : public VirtualSolverUMFPACK<int, double> {
  public:
   MumpsStandIn(HashMatrix<int, double>& A, const Data_Sparse_Solver& ds, Stack stack)
@@ -49,16 +63,22 @@ class MumpsStandIn : public VirtualSolverUMFPACK<int, double> {
       // MPI_Abort, not FreeFEM's ExecError: the refusing ranks would stop while the others wait
       // in the next collective call for ever (measured: -ffddm_master_p 2 on 4 ranks hung).
       std::cerr << "error: " << what << std::endl;
-      using Abort = int (*)(void*, int);
-      void* abortSymbol = dlsym(RTLD_DEFAULT, "MPI_Abort");
-      void* world = dlsym(RTLD_DEFAULT, "ompi_mpi_comm_world");
-      if (abortSymbol && world) reinterpret_cast<Abort>(abortSymbol)(world, 1);
-      ExecError(what.c_str());
+      AbortAllRanks(1);
     }
   }
 };
 
+// MpiAbortAll(code), for the scripts: after a FreeFEM error caught on one rank (try/catch), stop
+// them all rather than leave the others waiting.
+long MpiAbortAll(long const& code) {
+  AbortAllRanks((int)code);
+  return code;
+}
+
 }  // namespace
 
-static void Init() { addsolver<MumpsStandIn>("MUMPS", 1); }
+static void Init() {
+  addsolver<MumpsStandIn>("MUMPS", 1);
+  Global.Add("MpiAbortAll", "(", new OneOperator1_<long, long>(MpiAbortAll));
+}
 LOADFUNC(Init)
