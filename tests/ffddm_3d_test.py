@@ -22,6 +22,10 @@ on the default 3D mesh's size (nr 2, nt 8, nz 10: 891 dofs).
   in partial contact (an oval pipe, -ovality 8e-4: 21 of 27 nodes pressing), where the condensed
   PSOR equals the direct solve as well. Two layers (243 dofs): one level, since
   ARPACK fails in GenEO's eigenproblems on subdomains this small (measured: NO_SHIFTS_APPLIED).
+- The heat equation's time loop through ffddm (tools/bench/ffddm_heat_3d.edp: Crank-Nicolson, 20
+  steps of 60 s, a cold ring warming between the pipe and the air): the bore's mean temperature
+  curve on 2 ranks equal to 1 rank's and to the direct solve's to 1e-8 of its rise; the steady
+  state within 5e-3 of Text - Tpipe of the radial closed form (1.9e-3 at nr 2, nt 8).
 - The stand-in refuses a coarse problem spread over two ranks (-ffddm_master_p 2): exit non-zero
   within 60 s, every rank stopped (MPI_Abort: a rank's FreeFEM error alone left the others
   waiting), the message naming the stand-in and the way out. GenEO on subdomains too small for its
@@ -38,7 +42,7 @@ sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "tools", "bench"))
 
 from checklib import check, finish, record  # noqa: E402
-from ffddm_scaling import CONTACT_SCRIPT, SCRIPT, ffddm_environment, solve  # noqa: E402
+from ffddm_scaling import CONTACT_SCRIPT, HEAT_SCRIPT, SCRIPT, ffddm_environment, solve  # noqa: E402
 
 
 def ranks_alive(session, wait=5.0):
@@ -132,6 +136,19 @@ def main():
         contact_one["reactions"])
     check(len(contact_one["reactions"]) == len(contact_two["reactions"]) and ranks_difference <= 1e-6,
           f"contact's MPI equality: the reactions on 1 and 2 ranks within {ranks_difference:.1e} of the largest (<= 1e-6)")
+    heat_one = solve(1, 2, 8, 2, direct=True, tol=1e-10, timeout=300, script=HEAT_SCRIPT)
+    heat_two = solve(2, 2, 8, 2, direct=True, tol=1e-10, timeout=300, script=HEAT_SCRIPT)
+    rise = heat_one["curve"][-1] - heat_one["curve"][0]
+    heat_difference = max(abs(a - b) for a, b in zip(heat_one["curve"], heat_two["curve"])) / rise
+    check(len(heat_one["curve"]) == len(heat_two["curve"]) == 21 and rise > 10 and heat_difference <= 1e-8,
+          f"the heat time loop through ffddm: the bore's mean {heat_one['curve'][0]:.2f} -> {heat_one['curve'][-1]:.3f} K in "
+          f"20 steps, the curve on 2 ranks as on 1 to {heat_difference:.1e} of its rise (<= 1e-8)")
+    check(all(0 <= run["direct_difference"] <= 1e-8 for run in (heat_one, heat_two)),
+          f"the heat time loop as the direct solve's: {heat_one['direct_difference']:.1e}, {heat_two['direct_difference']:.1e} "
+          "of the rise (<= 1e-8)")
+    check(heat_two["steady_relative_error"] <= 5e-3,
+          f"the heat's steady state against the radial closed form: {heat_two['steady_relative_error']:.1e} of Text - Tpipe "
+          "(<= 5e-3 at nr 2, nt 8)")
     refused = stopped_run(SCRIPT, ["-nr", "2", "-nt", "8", "-nz", "10", "-geneo", "1", "-ffddm_master_p", "2"],
                           "error: MUMPS stand-in")
     check(refused["exit"] not in (None, 0) and refused["errors"] and not refused["left_running"],
@@ -148,7 +165,8 @@ def main():
     record("ffddm_3d", {"one_rank": one, "two_ranks": two, "geneo_one_rank": geneo_one, "geneo_two_ranks": geneo_two,
                         "contact_one_rank": contact_one, "contact_two_ranks": contact_two,
                         "contact_ranks_difference": ranks_difference, "dual_two_ranks": dual_two, "dual_difference": dual_difference, "oval": oval, "oval_dual": oval_dual,
-                        "oval_difference": oval_difference, "refused_coarse_problem": refused, "geneo_failure": failed})
+                        "oval_difference": oval_difference, "heat_one_rank": heat_one, "heat_two_ranks": heat_two, "heat_difference": heat_difference,
+                        "refused_coarse_problem": refused, "geneo_failure": failed})
     finish()
 
 

@@ -26,6 +26,7 @@ sys.path.insert(0, os.path.join(ROOT, "tools"))
 from markdown_wrap import wrap  # noqa: E402
 SCRIPT = os.path.join(ROOT, "tools", "bench", "ffddm_sleeve_3d.edp")
 CONTACT_SCRIPT = os.path.join(ROOT, "tools", "bench", "ffddm_contact_3d.edp")
+HEAT_SCRIPT = os.path.join(ROOT, "tools", "bench", "ffddm_heat_3d.edp")
 BENCH_DIR = os.path.join(ROOT, "tools", "bench")
 PLUGIN_DIR = os.path.join(ROOT, "plugin", "build")
 STUB_DIR = os.path.join(PLUGIN_DIR, "ffddm")
@@ -52,7 +53,7 @@ def ffddm_environment():
 
 
 def solve(ranks, nr, nt, nz, direct=False, tol=1e-8, timeout=900, geneo=False, extra=(), script=SCRIPT):
-    """One run of ffddm_sleeve_3d.edp (or `script`: ffddm_contact_3d.edp) on `ranks` ranks (two
+    """One run of ffddm_sleeve_3d.edp (or `script`: ffddm_contact_3d.edp, ffddm_heat_3d.edp) on `ranks` ranks (two
     levels with `geneo`; `extra`: more of its options): its JSON record."""
     with tempfile.TemporaryDirectory(prefix="sma-ffddm-") as scratch:
         out = os.path.join(scratch, "run.json")
