@@ -42,7 +42,7 @@ sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "tools", "bench"))
 
 from checklib import check, finish, record  # noqa: E402
-from ffddm_scaling import CONTACT_SCRIPT, HEAT_SCRIPT, SCRIPT, ffddm_environment, solve  # noqa: E402
+from ffddm_scaling import CONTACT_SCRIPT, HEAT_SCRIPT, SCRIPT, run_ranks, solve  # noqa: E402
 
 
 def ranks_alive(session, wait=5.0):
@@ -59,21 +59,13 @@ def ranks_alive(session, wait=5.0):
 def stopped_run(script, options, message):
     """`script` on 2 ranks with `options`, a run that must fail on some rank: the exit code, the
     seconds, the error lines starting with `message` and whether a rank outlived mpiexec."""
-    cmd = ["mpiexec", "--oversubscribe", "-np", "2", "FreeFem++-mpi", "-nw", "-ne", script, "-v", "0",
-           "-ffddm_verbosity", "0", *options]
     start = time.monotonic()
-    run = subprocess.Popen(cmd, env=ffddm_environment(), stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                           text=True, start_new_session=True)
-    try:
-        output, _ = run.communicate(timeout=60)
-    except subprocess.TimeoutExpired:
-        os.killpg(run.pid, 9)
-        output, _ = run.communicate()
-        return {"exit": None, "seconds": time.monotonic() - start, "errors": [], "left_running": True}
+    code, output, session = run_ranks(2, script, options, timeout=60)
     seconds = time.monotonic() - start
-    left = ranks_alive(run.pid)
+    if code is None:
+        return {"exit": None, "seconds": seconds, "errors": [], "left_running": True}
     errors = [line for line in output.splitlines() if line.startswith(message)]
-    return {"exit": run.returncode, "seconds": seconds, "errors": errors, "left_running": left}
+    return {"exit": code, "seconds": seconds, "errors": errors, "left_running": ranks_alive(session)}
 
 
 def main():

@@ -4,8 +4,8 @@
 
 One level and two (GenEO). Strong: one mesh on 1 and 2 ranks (and the one-rank direct solve).
 Weak: the layers along z doubled with the ranks (the same cells per rank). Then 4 and 8 ranks on
-the 2 cores, both ways, for their iteration counts only. Each run's error against the exact free dilatation, its GMRES iterations
-and its times; the speed-ups are ratios of runs made here one after the other. Writes
+the 2 cores, both ways, for their iteration counts only. Each run's error against the exact free
+dilatation, its GMRES iterations and its times; the speed-ups are ratios of runs made here one after the other. Writes
 results/bench/ffddm-sleeve-3d.json and docs/benchmarks/ffddm-sleeve-3d.md (a few minutes).
 
     tools/bench/ffddm_scaling.py [--nr 4 --nt 16 --nz 60]
@@ -52,29 +52,39 @@ def ffddm_environment():
     return env
 
 
+def run_ranks(ranks, script, options, timeout, cwd=None):
+    """`script` under mpiexec on `ranks` ranks with `options`, mpiexec and its ranks in a session of
+    their own, stopped together when the run outlives `timeout` s (killing mpiexec alone could leave
+    ranks running): (exit code or None when stopped, its output, the session's id)."""
+    cmd = ["mpiexec", "--oversubscribe", "-np", str(ranks), "FreeFem++-mpi", "-nw", "-ne", script, "-v", "0",
+           "-ffddm_verbosity", "0", *options]
+    run = subprocess.Popen(cmd, cwd=cwd, env=ffddm_environment(), stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                           text=True, start_new_session=True)
+    try:
+        output, _ = run.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        os.killpg(run.pid, signal.SIGKILL)
+        output, _ = run.communicate()
+        return None, output, run.pid
+    except BaseException:
+        os.killpg(run.pid, signal.SIGKILL)
+        raise
+    return run.returncode, output, run.pid
+
+
 def solve(ranks, nr, nt, nz, direct=False, tol=1e-8, timeout=900, geneo=False, extra=(), script=SCRIPT):
-    """One run of ffddm_sleeve_3d.edp (or `script`: ffddm_contact_3d.edp, ffddm_heat_3d.edp) on `ranks` ranks (two
-    levels with `geneo`; `extra`: more of its options): its JSON record."""
+    """One run of ffddm_sleeve_3d.edp (or `script`: ffddm_contact_3d.edp, ffddm_heat_3d.edp) on
+    `ranks` ranks (two levels with `geneo`; `extra`: more of its options): its JSON record."""
     with tempfile.TemporaryDirectory(prefix="sma-ffddm-") as scratch:
         out = os.path.join(scratch, "run.json")
-        cmd = ["mpiexec", "--oversubscribe", "-np", str(ranks), "FreeFem++-mpi", "-nw", "-ne", script, "-v", "0",
-               "-ffddm_verbosity", "0", "-nr", str(nr), "-nt", str(nt), "-nz", str(nz), "-tol", str(tol),
-               "-direct", "1" if direct else "0", "-geneo", "1" if geneo else "0", "-out", out, *extra]
-        # mpiexec and its ranks in a session of their own, stopped together when the run is too long
-        # (killing mpiexec alone could leave ranks running)
-        run = subprocess.Popen(cmd, cwd=scratch, env=ffddm_environment(), stdout=subprocess.PIPE,
-                               stderr=subprocess.STDOUT, text=True, start_new_session=True)
-        try:
-            output, _ = run.communicate(timeout=timeout)
-        except subprocess.TimeoutExpired:
-            os.killpg(run.pid, signal.SIGKILL)
-            run.communicate()
-            sys.exit(f"error: ffddm_scaling: {' '.join(cmd)} still running after {timeout} s: stopped")
-        except BaseException:
-            os.killpg(run.pid, signal.SIGKILL)
-            raise
-        if run.returncode != 0 or not os.path.exists(out):
-            sys.exit(f"error: ffddm_scaling: {' '.join(cmd)} failed (exit {run.returncode}):\n" + output[-3000:])
+        options = ["-nr", str(nr), "-nt", str(nt), "-nz", str(nz), "-tol", str(tol), "-direct", "1" if direct else "0",
+                   "-geneo", "1" if geneo else "0", "-out", out, *extra]
+        code, output, _ = run_ranks(ranks, script, options, timeout, cwd=scratch)
+        what = f"{os.path.relpath(script, ROOT)} on {ranks} ranks {' '.join(options)}"
+        if code is None:
+            sys.exit(f"error: ffddm_scaling: {what} still running after {timeout} s: stopped")
+        if code != 0 or not os.path.exists(out):
+            sys.exit(f"error: ffddm_scaling: {what} failed (exit {code}):\n" + output[-3000:])
         with open(out) as f:
             return json.load(f)
 
