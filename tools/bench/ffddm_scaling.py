@@ -6,7 +6,8 @@ One level and two (GenEO). Strong: one mesh on 1 and 2 ranks (and the one-rank d
 Weak: the layers along z doubled with the ranks (the same cells per rank). Then 4 and 8 ranks on
 the 2 cores, both ways, for their iteration counts only. Each run's error against the exact free
 dilatation, its GMRES iterations and its times; the speed-ups are ratios of runs made here one after the other. Writes
-results/bench/ffddm-sleeve-3d.json and docs/benchmarks/ffddm-sleeve-3d.md (a few minutes).
+results/bench/ffddm-sleeve-3d.json and docs/benchmarks/ffddm-sleeve-3d.md (a few minutes); then, on
+one rank, the contact's solves condensed against dual and the heat's steady state under refinement.
 
     tools/bench/ffddm_scaling.py [--nr 4 --nt 16 --nz 60]
 """
@@ -109,10 +110,57 @@ def measure(nr=4, nt=16, nz=60, ranks=(1, 2), oversubscribed=(4, 8)):
         results["methods"][name] = {
             key: [solve(p, nr, nt, layers, direct=key == "strong" and p == ranks[0] and not geneo, geneo=geneo, extra=extra)
                   for p, layers in plans[key]] for key in sequences}
+    results["contact_heat"] = measure_contact_heat()
+    save(results)
+    return results
+
+
+def save(results):
+    """results/bench/ffddm-sleeve-3d.json"""
     os.makedirs(os.path.join(ROOT, "results", "bench"), exist_ok=True)
     with open(os.path.join(ROOT, "results", "bench", "ffddm-sleeve-3d.json"), "w") as f:
         json.dump(results, f, indent=1)
-    return results
+
+
+# The contact's bores (nr, nt, nz) and the heat's meshes: the section refined alone, then with the layers
+CONTACT_MESHES = ((2, 8, 2), (2, 8, 10), (2, 8, 20), (3, 12, 20))
+HEAT_MESHES = {"section": ((2, 8, 2), (4, 16, 2), (8, 32, 2)), "section and layers": ((2, 8, 2), (4, 16, 4), (8, 32, 8))}
+
+
+def measure_contact_heat():
+    """On one rank: the contact's solves, condensed (one a bore node) against the dual solve, with the
+    largest difference of their reactions; the heat's steady state against the radial closed form,
+    refining the section alone and with the layers (one time step: only the steady state is read)."""
+    contact = []
+    for nr, nt, nz in CONTACT_MESHES:
+        condensed = solve(1, nr, nt, nz, tol=1e-10, script=CONTACT_SCRIPT)
+        dual = solve(1, nr, nt, nz, tol=1e-10, script=CONTACT_SCRIPT, extra=("-dual", "1"))
+        difference = max(abs(a - b) for a, b in zip(condensed["reactions"], dual["reactions"])) / max(condensed["reactions"])
+        contact.append({"nr": nr, "nt": nt, "nz": nz, "bore_nodes": condensed["bore_nodes"],
+                        "condensed_solves": condensed["contact_solves"], "dual_solves": dual["contact_solves"],
+                        "difference": difference})
+    heat = {name: [dict(solve(1, nr, nt, nz, tol=1e-10, script=HEAT_SCRIPT, extra=("-steps", "1")), nr=nr, nt=nt, nz=nz)
+                   for nr, nt, nz in meshes] for name, meshes in HEAT_MESHES.items()}
+    return {"contact": contact, "heat": heat}
+
+
+def contact_heat_lines(study):
+    """The page's section on measure_contact_heat()'s results."""
+    lines = ["", "The contact condensed onto the bore (tools/bench/ffddm_contact_3d.edp, one rank): distributed solves "
+             "of the condensation (one a bore node) against the dual solve (`-dual 1`, MPRGP: one a product W p), and "
+             "the largest difference of their reactions:", "",
+             "| nr x nt x nz | bore nodes | condensed: solves | dual: solves | difference |", "|---|---|---|---|---|"]
+    for c in study["contact"]:
+        lines.append(f"| {c['nr']} x {c['nt']} x {c['nz']} | {c['bore_nodes']} | {c['condensed_solves']} | "
+                     f"{c['dual_solves']} | {c['difference']:.1e} |")
+    lines += ["", "The heat equation's steady state (tools/bench/ffddm_heat_3d.edp, one rank) against the radial closed "
+              "form, relative to Text - Tpipe, with the observed order between levels:", "",
+              "| refined | nr x nt x nz | error | order |", "|---|---|---|---|"]
+    for name, runs in study["heat"].items():
+        for k, r in enumerate(runs):
+            order = f"{math.log2(runs[k - 1]['steady_relative_error'] / r['steady_relative_error']):.2f}" if k else "-"
+            lines.append(f"| {name} | {r['nr']} x {r['nt']} x {r['nz']} | {r['steady_relative_error']:.2e} | {order} |")
+    return lines
 
 
 def predict(runs, single, cores=64):
@@ -208,7 +256,10 @@ def write_doc(results):
               "doubling on this chain of thin slabs (a thin-walled ring has many soft modes a subdomain, and the "
               "default 20 vectors a subdomain are all used), so it scales with a falling efficiency; more vectors a "
               "subdomain lower the count at a higher setup cost. The sleeve's own models fit one process (sleeve-3d's "
-              "bound, 2e5 cells).", ""]
+              "bound, 2e5 cells)."]
+    if "contact_heat" in results:
+        lines += contact_heat_lines(results["contact_heat"])
+    lines.append("")
     path = os.path.join(ROOT, "docs", "benchmarks", "ffddm-sleeve-3d.md")
     with open(path, "w") as f:
         f.write(wrap("\n".join(lines)))
@@ -222,10 +273,16 @@ def main():
     parser.add_argument("--nz", type=int, default=60)
     parser.add_argument("--doc-only", action="store_true",
                         help="rewrite the page from the last results/bench/ffddm-sleeve-3d.json, running nothing")
+    parser.add_argument("--contact-heat-only", action="store_true",
+                        help="run only the contact's and the heat's study into the last results, then the page")
     opts = parser.parse_args()
-    if opts.doc_only:
+    if opts.doc_only or opts.contact_heat_only:
         with open(os.path.join(ROOT, "results", "bench", "ffddm-sleeve-3d.json")) as f:
-            write_doc(json.load(f))
+            results = json.load(f)
+        if opts.contact_heat_only:
+            results["contact_heat"] = measure_contact_heat()
+            save(results)
+        write_doc(results)
     else:
         write_doc(measure(opts.nr, opts.nt, opts.nz))
 
