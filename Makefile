@@ -2,6 +2,8 @@
 #   make run  [SCENE=<scene>] [ARGS='-name value ...']   install, build, run a scene, draw its figures
 #                                                        (SCENE may also name a variant of edp/variants)
 #                                                        (ARGS=-help: list the scene's options only)
+#   make run SCENE=sleeve-3d NP=2 [ARGS=...]             the same scene on NP MPI ranks, its solves through
+#                                                        ffddm (edp/mpi/sleeve-3d.edp), into results/sleeve-3d-np2
 #   make test                                            install, build, pass every test (ctest)
 #   make figures                                         the paper's claims, each figure beside ours: docs/figures.md
 #   make sweep SCENE=<scene> PARAM=g VALUES='250 500 1000' [PARAM2=interference VALUES2='2e-4 5e-4']
@@ -239,9 +241,21 @@ RUN_PLOT = $(if $(wildcard tools/plot/plot_$(SCENE).py),$(PYTHON) tools/plot/plo
 # ARGS reaches tools/run_scene.py through the environment, never pasted into the recipe: a `;` or
 # a `$(...)` in it is a character, not a command (docs/errors.md). run_scene.py draws the figures
 # from the folder the run wrote (a -out among ARGS included).
+# NP on make's command line (not NP in the environment, nor make ensemble's default) runs the scene's
+# distributed version, edp/mpi/$(SCENE).edp, on NP ranks (tools/ff-mpi); NP reaches run_scene.py,
+# which checks it is a whole number, through the environment.
 run: export RUN_ARGS := $(value ARGS)
+run: export RUN_NP := $(if $(filter command line,$(origin NP)),$(value NP))
 run: check-scene plugin meshes
-	@$(PYTHON) tools/run_scene.py --env-args RUN_ARGS $(RUN_SCRIPT) $(RUN_RESULTS) $(RUN_PLOT)
+	@if [ -z "$$RUN_NP" ]; then \
+	  $(PYTHON) tools/run_scene.py --env-args RUN_ARGS $(RUN_SCRIPT) $(RUN_RESULTS) $(RUN_PLOT); \
+	elif [ ! -f edp/mpi/$(SCENE).edp ]; then \
+	  echo "error: SCENE=$(SCENE) has no distributed run (NP=...): the scenes of edp/mpi/ have one:" \
+	    "$(notdir $(basename $(wildcard edp/mpi/*.edp)))" >&2; exit 2; \
+	else \
+	  $(PYTHON) tools/run_scene.py --env-args RUN_ARGS --ranks "$$RUN_NP" edp/mpi/$(SCENE).edp \
+	    "$(RUN_RESULTS)-np$$(printf '%s' "$$RUN_NP" | tr -c '0-9' _)" $(RUN_PLOT); \
+	fi
 
 # A checkout copied or moved elsewhere keeps a build/CMakeCache.txt naming the old folder, which
 # cmake refuses: such a build/ is another checkout's and is rebuilt from scratch.

@@ -8,6 +8,8 @@ Usage (the Makefile's):
     --mpi NP        run on NP MPI ranks (mpiexec --oversubscribe -np NP FreeFem++-mpi -nw -ne)
                     instead of tools/ff
     --seeds N       put -v 0 -seeds N before the user's words (make ensemble)
+    --ranks NP      run a distributed scene (edp/mpi/*.edp) on NP ranks through tools/ff-mpi
+                    (make run SCENE=sleeve-3d NP=2), into DEFAULT_OUT unless the words name a folder
 Only the variables named here are read: nothing of the user's environment (a stray RUN_ARGS,
 RUN_OUT, a launcher's name) changes what runs unless its name is on this command line.
 What the user types reaches this script through the environment, never pasted into a shell
@@ -38,13 +40,13 @@ def words_of(variable, name):
         sys.exit(2)
 
 
-def whole_number(text, what, largest):
+def whole_number(text, what, largest, target="make ensemble"):
     """text as a whole number from 1 to largest, written without leading zeros, or exit 2 naming
-    make ensemble's variable `what` ("NP='1;x' ..." a word, never a shell's)."""
+    the make target's variable `what` ("NP='1;x' ..." a word, never a shell's)."""
     digits = len(str(largest))
     if not re.fullmatch(rf"[1-9][0-9]{{0,{digits - 1}}}", text):
         kind = "MPI ranks" if what == "NP" else "seeds"
-        print(f"error: make ensemble: {what}='{text}' must be a whole number of {kind} from 1 to {largest}",
+        print(f"error: {target}: {what}='{text}' must be a whole number of {kind} from 1 to {largest}",
               file=sys.stderr)
         sys.exit(2)
     return text
@@ -52,7 +54,7 @@ def whole_number(text, what, largest):
 
 def parse(argv):
     """The leading --options of argv (see the docstring), then SCRIPT, DEFAULT_OUT and PLOT."""
-    opts = {"env-args": None, "env-out": None, "mpi": None, "seeds": None}
+    opts = {"env-args": None, "env-out": None, "mpi": None, "seeds": None, "ranks": None}
     while argv and argv[0].startswith("--"):
         name = argv[0][2:]
         if name not in opts or len(argv) < 2:
@@ -110,6 +112,10 @@ def main(argv):
     if opts["mpi"] is not None:
         launcher = ["mpiexec", "--oversubscribe", "-np", whole_number(opts["mpi"], "NP", 9999), "FreeFem++-mpi",
                     "-nw", "-ne"]
+    if opts["ranks"] is not None:
+        # (at most the cores times 8: more ranks than that only wait for each other)
+        launcher = [os.path.join(ROOT, "tools", "ff-mpi"),
+                    whole_number(opts["ranks"], "NP", 8 * (os.cpu_count() or 1), "make run")]
     if opts["seeds"] is not None:
         fixed = ["-v", "0", "-seeds", whole_number(opts["seeds"], "SEEDS", 999999)]
     # The programs the launcher starts, named before anything runs (mpiexec's own message for a
@@ -136,6 +142,9 @@ def main(argv):
         print(f"{os.path.basename(default_out)} with {' '.join(user)}: results in {named}/ (the defaults' "
               f"{default_out}/ is left as it is; -out names another folder)")
         words = words + ["-out", named]
+    elif opts["ranks"] is not None and "-out" not in words and "-help" not in words:
+        # (the distributed run's folder is its own: the sequential scene's default is another curve)
+        words = words + ["-out", default_out]
     try:
         run = children.run(launcher + [script] + words)
     except OSError as e:  # the launcher itself missing (mpiexec, FreeFem++-mpi not installed)
