@@ -3,6 +3,7 @@ import csv
 import json
 import os
 import subprocess
+import time
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -61,6 +62,17 @@ def run_scene_captured(scene, out_name, *args):
     done = subprocess.run([os.path.join(ROOT, "tools", "ff"), f"edp/scenes/{scene}.edp", "-out", out, *args],
                           cwd=ROOT, capture_output=True, text=True)
     return out, done
+
+
+def ranks_alive(session, wait=5.0):
+    """Whether a process of the session still runs `wait` seconds after mpiexec's exit (the ranks,
+    once killed, are zombies until the system reaps them: not counted)."""
+    deadline = time.monotonic() + wait
+    while True:
+        states = subprocess.run(["ps", "-o", "stat=", "-s", str(session)], capture_output=True, text=True).stdout.split()
+        if not any(not state.startswith("Z") for state in states) or time.monotonic() > deadline:
+            return any(not state.startswith("Z") for state in states)
+        time.sleep(0.2)
 
 
 def files_under(folder):

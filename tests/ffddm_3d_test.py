@@ -32,7 +32,6 @@ on the default 3D mesh's size (nr 2, nt 8, nz 10: 891 dofs).
   eigenproblems (ARPACK fails on one rank): the tool's catch stops every rank, within 60 s.
 Writes results/checks/ffddm_3d.json.
 """
-import subprocess
 import time
 import os
 import sys
@@ -41,19 +40,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "tools", "bench"))
 
-from checklib import check, finish, record  # noqa: E402
+from checklib import check, finish, ranks_alive, record  # noqa: E402
 from ffddm_scaling import CONTACT_SCRIPT, HEAT_SCRIPT, SCRIPT, run_ranks, solve  # noqa: E402
-
-
-def ranks_alive(session, wait=5.0):
-    """Whether a process of the session still runs `wait` seconds after mpiexec's exit (the ranks,
-    once killed, are zombies until the system reaps them: not counted)."""
-    deadline = time.monotonic() + wait
-    while True:
-        states = subprocess.run(["ps", "-o", "stat=", "-s", str(session)], capture_output=True, text=True).stdout.split()
-        if not any(not state.startswith("Z") for state in states) or time.monotonic() > deadline:
-            return any(not state.startswith("Z") for state in states)
-        time.sleep(0.2)
 
 
 def stopped_run(script, options, message):

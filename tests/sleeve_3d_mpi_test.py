@@ -1,0 +1,150 @@
+#!/usr/bin/python3
+"""sleeve-3d on MPI ranks (edp/mpi/sleeve-3d.edp through tools/ff-mpi; make run SCENE=sleeve-3d NP=2):
+the scene's time loop and the paper's nested loops, every stiffness and heat solve through ffddm
+(edp/solvers/distributed.idp; docs/model.md#the-scene-on-ffddm).
+
+On a small mesh (-nr 2 -nt 4 -length 0.04: 75 nodes, 4 layers) and fixed steps (-tol 0 -steps 100,
+so that every run takes the same instants):
+- MPI equality: the curves (mean pressure, the bore's mean temperature, the austenite fraction) on
+  1 and 2 ranks equal the sequential scene's with the same nested loops (-stepsolver fixedpoint)
+  to 2e-5 of their largest value (measured 2.5e-6: the nested loops stop at -dctol 1e-3, and a
+  solve's 1e-10 moves where they stop);
+- the difference is the loops' tolerance, not the distribution: with -dctol 1e-7 -fptol 1e-11 it
+  falls below 5e-7 (measured 5e-8), and by more than 10 times;
+- the solves: every one within 100 x -ddmtol of the scene's matrix (summary.json "distributed"
+  residual_max); on one rank the preconditioner is the exact inverse (at most one GMRES iteration
+  a solve), on two more than one (the subdomains are used);
+- the laws as the sequential scene reports them: gap >= -1e-6 of the interference, r gap <= 1e-6,
+  equilibrium residual <= 1e-9; rank 0 alone prints the report (tools/ff-mpi), and the other
+  rank's scratch results folder is gone;
+- refusals, once and without a hang: -bend (the stages need the plugin's factorisations), named by
+  the sequential first step; 3 ranks for 2 layers (a slab each), named by rank 0; each exits non-zero
+  within 60 s with no rank left running;
+- make run SCENE=sleeve-3d NP=2 runs it into the folder it names and draws its figures.
+Writes results/checks/sleeve_3d_mpi.json.
+"""
+import glob
+import os
+import signal
+import subprocess
+import sys
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checklib import ROOT, TEST_RESULTS, check, finish, ranks_alive, record, rows, summary_of  # noqa: E402
+
+SMALL = ["-nr", "2", "-nt", "4", "-length", "0.04", "-tol", "0", "-steps", "100", "-quiet", "1"]
+TIGHT = ["-dctol", "1e-7", "-dcmaxit", "1000", "-fptol", "1e-11"]
+COLUMNS = ("pressure_mean", "T_inner_mean", "fraction_austenite")
+
+
+def ranks_run(ranks, out, *args, timeout=300):
+    """tools/ff-mpi on `ranks` ranks into `out`, in a session of its own (stopped whole at the
+    timeout): (exit code or None, stdout + stderr, seconds, session)."""
+    start = time.monotonic()
+    run = subprocess.Popen([os.path.join(ROOT, "tools", "ff-mpi"), str(ranks), "edp/mpi/sleeve-3d.edp", "-out", out,
+                            *args], cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                           start_new_session=True)
+    try:
+        output, _ = run.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        os.killpg(run.pid, signal.SIGKILL)
+        output, _ = run.communicate()
+        return None, output, time.monotonic() - start, run.pid
+    return run.returncode, output, time.monotonic() - start, run.pid
+
+
+def sequential(out, *args):
+    subprocess.run([os.path.join(ROOT, "tools", "ff"), "edp/scenes/sleeve-3d.edp", "-out", out, "-stepsolver",
+                    "fixedpoint", *args], cwd=ROOT, check=True, stdout=subprocess.DEVNULL)
+    return out
+
+
+def curve_difference(a, b):
+    """The largest difference of the COLUMNS of two history.csv at the same instants, over each
+    column's largest value; None when the instants differ."""
+    ra, rb = rows(os.path.join(a, "history.csv")), rows(os.path.join(b, "history.csv"))
+    if len(ra) != len(rb) or any(x["t"] != y["t"] for x, y in zip(ra, rb)):
+        return None
+    worst = 0.0
+    for column in COLUMNS:
+        scale = max(abs(float(r[column])) for r in ra) or 1.0
+        worst = max(worst, max(abs(float(x[column]) - float(y[column])) for x, y in zip(ra, rb)) / scale)
+    return worst
+
+
+def main():
+    out = os.path.join(TEST_RESULTS, "sleeve-3d-mpi")
+    before = set(glob.glob("/tmp/sma-sleeve-3d-rank1-*"))
+    seq = sequential(out + "-seq", *SMALL)
+    runs = {}
+    for ranks in (1, 2):
+        code, output, seconds, _ = ranks_run(ranks, f"{out}-np{ranks}", *SMALL)
+        check(code == 0, f"{ranks} rank(s): exit {code} in {seconds:.1f} s")
+        if code != 0:
+            print(output[-3000:])
+            finish()
+        runs[ranks] = f"{out}-np{ranks}"
+        reports = [line for line in output.splitlines() if line.startswith("sleeve-3d: L 0.04 m")]
+        check(len(reports) == 1, f"{ranks} rank(s): the report printed {len(reports)} time(s) (rank 0's only: 1)")
+    differences = {}
+    for name, (a, b) in {"1 rank": (seq, runs[1]), "2 ranks": (seq, runs[2]), "2 ranks vs 1": (runs[1], runs[2])}.items():
+        differences[name] = curve_difference(a, b)
+        check(differences[name] is not None and differences[name] <= 2e-5,
+              f"MPI equality, {name} against {'the sequential nested loops' if 'vs' not in name else '1 rank'}: the "
+              f"curves within {differences[name]} of their largest values (<= 2e-5; the loops' -dctol 1e-3)")
+    seq_tight = sequential(out + "-seq-tight", *SMALL, *TIGHT)
+    code, output, _, _ = ranks_run(2, out + "-np2-tight", *SMALL, *TIGHT)
+    tight = curve_difference(seq_tight, out + "-np2-tight") if code == 0 else None
+    check(tight is not None and tight <= 5e-7 and tight * 10 < differences["2 ranks"],
+          f"the difference is the loops' tolerance: with -dctol 1e-7 -fptol 1e-11, 2 ranks within {tight} of the "
+          f"sequential curve (<= 5e-7, and 10 times below {differences['2 ranks']})")
+    record_runs = {}
+    for ranks, folder in runs.items():
+        summary = summary_of(folder)
+        solves = summary["distributed"]
+        record_runs[ranks] = solves
+        check(solves["ranks"] == ranks and summary["step_solver"] == "fixedpoint",
+              f"{ranks} rank(s): summary.json says {solves['ranks']} rank(s), step solver {summary['step_solver']}")
+        check(solves["stiffness_solves"] > 0 and solves["heat_solves"] > 0 and solves["residual_max"] <= 100 * solves["tol"],
+              f"{ranks} rank(s): {solves['stiffness_solves']} stiffness and {solves['heat_solves']} heat solves, the "
+              f"largest residual against the scene's matrix {solves['residual_max']:.2e} (<= 100 x {solves['tol']})")
+        if ranks == 1:
+            check(solves["stiffness_iterations"] <= solves["stiffness_solves"],
+                  f"1 rank: {solves['stiffness_iterations']} GMRES iterations for {solves['stiffness_solves']} solves "
+                  "(the exact inverse: at most one each)")
+        else:
+            check(solves["stiffness_iterations"] > 2 * solves["stiffness_solves"],
+                  f"2 ranks: {solves['stiffness_iterations']} GMRES iterations for {solves['stiffness_solves']} solves "
+                  "(more than 2 each: two subdomains)")
+        check(summary["contact_gap_min"] >= -1e-6 and summary["contact_complementarity_max"] <= 1e-6
+              and summary["equilibrium_residual"] <= 1e-9,
+              f"{ranks} rank(s): gap min {summary['contact_gap_min']:.1e}, r gap {summary['contact_complementarity_max']:.1e}, "
+              f"equilibrium {summary['equilibrium_residual']:.1e}")
+    left = set(glob.glob("/tmp/sma-sleeve-3d-rank1-*")) - before
+    check(not left, f"rank 1's scratch results folder removed at its end ({sorted(left)} left)")
+    refusals = {}
+    for name, ranks, args, message in (
+            ("-bend", 2, ["-bend", "1e-3"], "error: sleeve-3d on MPI ranks: -bend 0.001: the stages after the clamping"),
+            ("3 ranks, 2 layers", 3, ["-nr", "1", "-length", "0.04"],
+             "error: sleeve-3d on MPI ranks: 3 ranks, a slab of the length along z each, for 2 element layers")):
+        code, output, seconds, session = ranks_run(ranks, out + "-refused", *args, timeout=60)
+        errors = [line for line in output.splitlines() if line.startswith("error:")]
+        alive = ranks_alive(session)
+        refusals[name] = {"exit": code, "seconds": seconds, "errors": errors, "left_running": alive}
+        check(code not in (None, 0) and len(errors) == 1 and errors[0].startswith(message) and not alive,
+              f"refused, {name}: exit {code} in {seconds:.1f} s, {len(errors)} error line(s) {errors[:1]}, a rank left "
+              f"running: {alive}")
+    folder = os.path.join(TEST_RESULTS, "sleeve-3d-mpi-make")
+    made = subprocess.run(["make", "-s", "run", "SCENE=sleeve-3d", "NP=2", f"ARGS=-nr 2 -nt 4 -length 0.04 -quiet 1 -out {folder}"],
+                          cwd=ROOT, capture_output=True, text=True)
+    figures = glob.glob(os.path.join(folder, "*.png"))
+    check(made.returncode == 0 and summary_of(folder)["distributed"]["ranks"] == 2 and figures,
+          f"make run SCENE=sleeve-3d NP=2: exit {made.returncode}, {len(figures)} figure(s) in {folder}")
+    record("sleeve_3d_mpi", {"curve_differences": differences, "tight_loops_difference": tight,
+                             "distributed": record_runs, "refusals": refusals})
+    finish()
+
+
+if __name__ == "__main__":
+    main()
