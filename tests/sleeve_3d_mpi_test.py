@@ -7,13 +7,15 @@ On a small mesh (-nr 2 -nt 4 -length 0.04: 75 nodes, 4 layers) and fixed steps (
 so that every run takes the same instants):
 - MPI equality: the curves (mean pressure, the bore's mean temperature, the austenite fraction) on
   1 and 2 ranks equal the sequential scene's with the same nested loops (-stepsolver fixedpoint)
-  to 2e-5 of their largest value (measured 2.5e-6: the nested loops stop at -dctol 1e-3, and a
-  solve's 1e-10 moves where they stop);
+  to 1e-4 of their largest value (measured 7.7e-6, and 3.2e-5 with GenEO: the nested loops stop
+  at -dctol 1e-3, and a solve's 1e-10 moves where they stop);
 - the difference is the loops' tolerance, not the distribution: with -dctol 1e-7 -fptol 1e-11 it
   falls below 5e-7 (measured 5e-8), and by more than 10 times;
 - the solves: every one within 100 x -ddmtol of the scene's matrix (summary.json "distributed"
   residual_max); on one rank the preconditioner is the exact inverse (at most one GMRES iteration
   a solve), on two more than one (the subdomains are used);
+- GenEO (-ddmgeneo 1, two levels for the stiffness solves), with the tight loops: a coarse space of
+  some vectors, fewer GMRES iterations a solve than one level's, the sequential curve to 5e-7;
 - the laws as the sequential scene reports them: gap >= -1e-6 of the interference, r gap <= 1e-6,
   equilibrium residual <= 1e-9; rank 0 alone prints the report (tools/ff-mpi), and the other
   rank's scratch results folder is gone;
@@ -90,16 +92,28 @@ def main():
     differences = {}
     for name, (a, b) in {"1 rank": (seq, runs[1]), "2 ranks": (seq, runs[2]), "2 ranks vs 1": (runs[1], runs[2])}.items():
         differences[name] = curve_difference(a, b)
-        check(differences[name] is not None and differences[name] <= 2e-5,
+        check(differences[name] is not None and differences[name] <= 1e-4,
               f"MPI equality, {name} against {'the sequential nested loops' if 'vs' not in name else '1 rank'}: the "
-              f"curves within {differences[name]} of their largest values (<= 2e-5; the loops' -dctol 1e-3)")
+              f"curves within {differences[name]} of their largest values (<= 1e-4; the loops' -dctol 1e-3)")
     seq_tight = sequential(out + "-seq-tight", *SMALL, *TIGHT)
     code, output, _, _ = ranks_run(2, out + "-np2-tight", *SMALL, *TIGHT)
     tight = curve_difference(seq_tight, out + "-np2-tight") if code == 0 else None
     check(tight is not None and tight <= 5e-7 and tight * 10 < differences["2 ranks"],
           f"the difference is the loops' tolerance: with -dctol 1e-7 -fptol 1e-11, 2 ranks within {tight} of the "
           f"sequential curve (<= 5e-7, and 10 times below {differences['2 ranks']})")
-    record_runs = {}
+    code, output, _, _ = ranks_run(2, out + "-np2-geneo", *SMALL, *TIGHT, "-ddmgeneo", "1")
+    geneo = summary_of(out + "-np2-geneo")["distributed"] if code == 0 else None
+    one_level = summary_of(out + "-np2-tight")["distributed"]
+    geneo_difference = curve_difference(seq_tight, out + "-np2-geneo") if code == 0 else None
+    check(geneo is not None and geneo["geneo"] == 1 and geneo["coarse_space"] > 0
+          and geneo["stiffness_iterations"] / geneo["stiffness_solves"]
+          < one_level["stiffness_iterations"] / one_level["stiffness_solves"]
+          and geneo_difference is not None and geneo_difference <= 5e-7,
+          f"GenEO on 2 ranks: exit {code}, coarse space {geneo and geneo['coarse_space']}, "
+          f"{geneo and geneo['stiffness_iterations'] / geneo['stiffness_solves']:.2f} GMRES iterations a solve against one "
+          f"level's {one_level['stiffness_iterations'] / one_level['stiffness_solves']:.2f}, the curve within "
+          f"{geneo_difference} of the sequential one with the same tight loops (<= 5e-7)")
+    record_runs = {"geneo": geneo}
     for ranks, folder in runs.items():
         summary = summary_of(folder)
         solves = summary["distributed"]
@@ -142,6 +156,7 @@ def main():
     check(made.returncode == 0 and summary_of(folder)["distributed"]["ranks"] == 2 and figures,
           f"make run SCENE=sleeve-3d NP=2: exit {made.returncode}, {len(figures)} figure(s) in {folder}")
     record("sleeve_3d_mpi", {"curve_differences": differences, "tight_loops_difference": tight,
+                             "geneo_difference": geneo_difference,
                              "distributed": record_runs, "refusals": refusals})
     finish()
 
