@@ -19,9 +19,10 @@ so that every run takes the same instants):
 - the laws as the sequential scene reports them: gap >= -1e-6 of the interference, r gap <= 1e-6,
   equilibrium residual <= 1e-9; rank 0 alone prints the report (tools/ff-mpi), and the other
   rank's scratch results folder is gone;
-- refusals, once and without a hang: -bend (the stages need the plugin's factorisations), named by
-  the sequential first step; 3 ranks for 2 layers (a slab each), named by rank 0; each exits non-zero
-  within 60 s with no rank left running;
+- refusals, once and without a hang: -bend (the stages need the plugin's factorisations) and an
+  unknown option, named by the sequential first step; 3 ranks for 2 layers (a slab each), named by
+  rank 0; an ffddm option this run does not set (-ffddm_overlap 2), by every rank; each exits
+  non-zero within 60 s with no rank left running;
 - make run SCENE=sleeve-3d NP=2 runs it into the folder it names and draws its figures.
 Writes results/checks/sleeve_3d_mpi.json.
 """
@@ -141,7 +142,9 @@ def main():
     for name, ranks, args, message in (
             ("-bend", 2, ["-bend", "1e-3"], "error: sleeve-3d on MPI ranks: -bend 0.001: the stages after the clamping"),
             ("3 ranks, 2 layers", 3, ["-nr", "1", "-length", "0.04"],
-             "error: sleeve-3d on MPI ranks: 3 ranks, a slab of the length along z each, for 2 element layers")):
+             "error: sleeve-3d on MPI ranks: 3 ranks, a slab of the length along z each, for 2 element layers"),
+            ("an unknown option", 2, ["-stpes", "30"], "error: sleeve-3d: unknown option -stpes (did you mean -steps?"),
+            ("ffddm's overlap", 2, ["-ffddm_overlap", "2"], "error: sleeve-3d on MPI ranks: -ffddm_overlap 2: this run takes only ffddm's default 1")):
         code, output, seconds, session = ranks_run(ranks, out + "-refused", *args, timeout=60)
         errors = [line for line in output.splitlines() if line.startswith("error:")]
         alive = ranks_alive(session)

@@ -41,7 +41,9 @@ from sma.helptsv import parse_tsv  # noqa: E402,F401  (the one parser of -help t
 OUTPUT = os.path.join(ROOT, "docs", "parameter-reference.md")
 # (glob, kind), in the order of the file's sections.
 SCRIPT_GLOBS = [("edp/scenes/*.edp", "scene"), ("edp/variants/*.edp", "variant"),
-                ("edp/bench/*.edp", "bench"), ("edp/ensemble/*.edp", "ensemble")]
+                ("edp/bench/*.edp", "bench"), ("edp/ensemble/*.edp", "ensemble"), ("edp/mpi/*.edp", "mpi")]
+# A scene's version on MPI ranks (edp/mpi) is listed as "<scene> on MPI ranks", against the scene's table.
+MPI_SUFFIX = " on MPI ranks"
 UNDOCUMENTED = "(undocumented)"
 TIMEOUT = 120  # s; a script that does not stop in CheckOptions would run its whole computation
 
@@ -51,7 +53,8 @@ def scripts():
     found = []
     for pattern, kind in SCRIPT_GLOBS:
         for path in sorted(glob.glob(os.path.join(ROOT, pattern)), key=lambda p: os.path.basename(p)[:-4]):
-            found.append((os.path.splitext(os.path.basename(path))[0], os.path.relpath(path, ROOT), kind))
+            name = os.path.splitext(os.path.basename(path))[0] + (MPI_SUFFIX if kind == "mpi" else "")
+            found.append((name, os.path.relpath(path, ROOT), kind))
     return found
 
 
@@ -64,6 +67,8 @@ def help_command(path, kind, fmt="tsv"):
                    FF_INCLUDEPATH=f"{ROOT}/edp/lib;{ROOT}/edp/model;{ROOT}/edp/solvers;{ROOT}/edp/problems;/usr/include/freefem++/idp;./")
         return ["mpiexec", "--oversubscribe", "-np", "1", "FreeFem++-mpi", "-nw", "-ne", "-v", "0", path] \
             + help_args, env
+    if kind == "mpi":
+        return [os.path.join(ROOT, "tools", "ff-mpi"), "1", path] + help_args, None
     return [os.path.join(ROOT, "tools", "ff"), path] + help_args, None
 
 
@@ -234,7 +239,8 @@ def markdown(all_scripts):
             out += differences(name, s, common)
     sections = [("scene", "Other scenes (edp/scenes)"), ("variant", "Variants (edp/variants, docs/variants.md)"),
                 ("bench", "Benchmark (edp/bench, docs/benchmarks.md)"),
-                ("ensemble", "Ensemble driver (edp/ensemble, docs/ensembles.md)")]
+                ("ensemble", "Ensemble driver (edp/ensemble, docs/ensembles.md)"),
+                ("mpi", "On MPI ranks (edp/mpi, docs/model.md#the-scene-on-ffddm)")]
     for kind, title in sections:
         chosen = {n: s for n, s in others.items() if s["kind"] == kind}
         if not chosen:
@@ -244,6 +250,11 @@ def markdown(all_scripts):
             out += ["Each variant lists only what differs from the table it derives from: a sleeve variant from",
                     "the sleeve scenes' shared table, another from its scene's (\"as above\": the same meaning).", ""]
         for name, s in chosen.items():
+            if kind == "mpi":
+                # The scene's options and the distributed run's: only what differs from the scene is listed.
+                base = name[:-len(MPI_SUFFIX)]
+                out += differences(name, s, as_table(all_scripts[base]["options"]), f"{base}'s table (above)")
+                continue
             if common and kind == "variant" and name.startswith("sleeve-"):
                 # A sleeve variant reads the sleeve scenes' options: only what differs is listed.
                 out += differences(name, s, common)
