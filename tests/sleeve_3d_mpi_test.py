@@ -23,6 +23,7 @@ so that every run takes the same instants):
   unknown option, named by the sequential first step; 3 ranks for 2 layers (a slab each), named by
   rank 0; an ffddm option this run does not set (-ffddm_overlap 2), by every rank; each exits
   non-zero within 60 s with no rank left running;
+- a TERM to tools/ff-mpi mid-run stops every rank (exit 143, said once, no summary.json published);
 - make run SCENE=sleeve-3d NP=2 runs it into the folder it names and draws its figures.
 Writes results/checks/sleeve_3d_mpi.json.
 """
@@ -152,6 +153,26 @@ def main():
         check(code not in (None, 0) and len(errors) == 1 and errors[0].startswith(message) and not alive,
               f"refused, {name}: exit {code} in {seconds:.1f} s, {len(errors)} error line(s) {errors[:1]}, a rank left "
               f"running: {alive}")
+    # A TERM to tools/ff-mpi mid-run (a job manager's stop): every rank stopped, said once, nothing
+    # of the run's summary published.
+    stopped = out + "-stopped"
+    run = subprocess.Popen([os.path.join(ROOT, "tools", "ff-mpi"), "2", "edp/mpi/sleeve-3d.edp", "-out", stopped, "-quiet", "1"],
+                           cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, start_new_session=True)
+    time.sleep(4)
+    run.send_signal(signal.SIGTERM)
+    start = time.monotonic()
+    try:
+        output, _ = run.communicate(timeout=60)
+    except subprocess.TimeoutExpired:
+        os.killpg(run.pid, signal.SIGKILL)
+        output, _ = run.communicate()
+    seconds = time.monotonic() - start
+    said = [line for line in output.splitlines() if line.startswith("error:")]
+    alive = ranks_alive(run.pid)
+    check(run.returncode == 143 and len(said) == 1 and "interrupted" in said[0] and not alive
+          and not os.path.exists(os.path.join(stopped, "summary.json")),
+          f"TERM mid-run: exit {run.returncode} (143) {seconds:.1f} s after it, {said}, a rank left running: {alive}, "
+          f"summary.json {'published' if os.path.exists(os.path.join(stopped, 'summary.json')) else 'not published'}")
     folder = os.path.join(TEST_RESULTS, "sleeve-3d-mpi-make")
     made = subprocess.run(["make", "-s", "run", "SCENE=sleeve-3d", "NP=2", f"ARGS=-nr 2 -nt 4 -length 0.04 -quiet 1 -out {folder}"],
                           cwd=ROOT, capture_output=True, text=True)
