@@ -9,13 +9,13 @@ so that every run takes the same instants):
   1 and 2 ranks equal the sequential scene's with the same nested loops (-stepsolver fixedpoint)
   to 1e-4 of their largest value (measured 7.7e-6, and 3.2e-5 with GenEO: the nested loops stop
   at -dctol 1e-3, and a solve's 1e-10 moves where they stop);
-- the difference is the loops' tolerance, not the distribution: with -dctol 1e-7 -fptol 1e-11 it
-  falls below 5e-7 (measured 5e-8), and by more than 10 times;
+- the difference is the loops' tolerance, not the distribution: with -dctol 1e-7 -fptol 1e-11 (on 2
+  ranks with GenEO's coarse space, -ddmgeneo 1) it falls below 5e-7 (measured 1.5e-7), and by more
+  than 10 times; GenEO's coarse space has some vectors and takes fewer GMRES iterations a solve
+  than one level (measured 6.6 against 9.1);
 - the solves: every one within 100 x -ddmtol of the scene's matrix (summary.json "distributed"
   residual_max); on one rank the preconditioner is the exact inverse (at most one GMRES iteration
   a solve), on two more than one (the subdomains are used);
-- GenEO (-ddmgeneo 1, two levels for the stiffness solves), with the tight loops: a coarse space of
-  some vectors, fewer GMRES iterations a solve than one level's, the sequential curve to 5e-7;
 - the laws as the sequential scene reports them: gap >= -1e-6 of the interference, r gap <= 1e-6,
   equilibrium residual <= 1e-9; rank 0 alone prints the report (tools/ff-mpi), and the other
   rank's scratch results folder is gone;
@@ -24,7 +24,8 @@ so that every run takes the same instants):
   rank 0; an ffddm option this run does not set (-ffddm_overlap 2), by every rank; each exits
   non-zero within 60 s with no rank left running;
 - a TERM to tools/ff-mpi mid-run stops every rank (exit 143, said once, no summary.json published);
-- make run SCENE=sleeve-3d NP=2 runs it into the folder it names and draws its figures.
+- make run SCENE=sleeve-3d NP=2 runs it into the folder it names and draws its figures;
+- the MPI entry sets the scene's name and defaults (sleeveScene, sleeveDefaults) as the scene does.
 Writes results/checks/sleeve_3d_mpi.json.
 """
 import glob
@@ -77,7 +78,15 @@ def curve_difference(a, b):
     return worst
 
 
+def scene_settings(path):
+    """The sleeveScene and sleeveDefaults lines of a script."""
+    return [line for line in open(os.path.join(ROOT, path)) if line.startswith(("string sleeveScene", "string sleeveDefaults"))]
+
+
 def main():
+    settings = scene_settings("edp/mpi/sleeve-3d.edp")
+    check(len(settings) == 2 and settings == scene_settings("edp/scenes/sleeve-3d.edp"),
+          f"edp/mpi/sleeve-3d.edp sets the scene's name and defaults as edp/scenes/sleeve-3d.edp does: {settings}")
     out = os.path.join(TEST_RESULTS, "sleeve-3d-mpi")
     before = set(glob.glob("/tmp/sma-sleeve-3d-rank1-*"))
     seq = sequential(out + "-seq", *SMALL)
@@ -97,24 +106,22 @@ def main():
         check(differences[name] is not None and differences[name] <= 1e-4,
               f"MPI equality, {name} against {'the sequential nested loops' if 'vs' not in name else '1 rank'}: the "
               f"curves within {differences[name]} of their largest values (<= 1e-4; the loops' -dctol 1e-3)")
+    # The tight loops on 2 ranks with GenEO's coarse space (-ddmgeneo 1): the difference is the
+    # loops' tolerance, and the two levels are at work.
     seq_tight = sequential(out + "-seq-tight", *SMALL, *TIGHT)
-    code, output, _, _ = ranks_run(2, out + "-np2-tight", *SMALL, *TIGHT)
-    tight = curve_difference(seq_tight, out + "-np2-tight") if code == 0 else None
-    check(tight is not None and tight <= 5e-7 and tight * 10 < differences["2 ranks"],
-          f"the difference is the loops' tolerance: with -dctol 1e-7 -fptol 1e-11, 2 ranks within {tight} of the "
-          f"sequential curve (<= 5e-7, and 10 times below {differences['2 ranks']})")
     code, output, _, _ = ranks_run(2, out + "-np2-geneo", *SMALL, *TIGHT, "-ddmgeneo", "1")
     geneo = summary_of(out + "-np2-geneo")["distributed"] if code == 0 else None
-    one_level = summary_of(out + "-np2-tight")["distributed"]
-    geneo_difference = curve_difference(seq_tight, out + "-np2-geneo") if code == 0 else None
+    tight = curve_difference(seq_tight, out + "-np2-geneo") if code == 0 else None
+    check(tight is not None and tight <= 5e-7 and tight * 10 < differences["2 ranks"],
+          f"the difference is the loops' tolerance: with -dctol 1e-7 -fptol 1e-11, 2 ranks (GenEO) within {tight} of "
+          f"the sequential curve (<= 5e-7, and 10 times below {differences['2 ranks']})")
+    one_level = summary_of(runs[2])["distributed"]
     check(geneo is not None and geneo["geneo"] == 1 and geneo["coarse_space"] > 0
           and geneo["stiffness_iterations"] / geneo["stiffness_solves"]
-          < one_level["stiffness_iterations"] / one_level["stiffness_solves"]
-          and geneo_difference is not None and geneo_difference <= 5e-7,
+          < one_level["stiffness_iterations"] / one_level["stiffness_solves"],
           f"GenEO on 2 ranks: exit {code}, coarse space {geneo and geneo['coarse_space']}, "
           f"{geneo and geneo['stiffness_iterations'] / geneo['stiffness_solves']:.2f} GMRES iterations a solve against one "
-          f"level's {one_level['stiffness_iterations'] / one_level['stiffness_solves']:.2f}, the curve within "
-          f"{geneo_difference} of the sequential one with the same tight loops (<= 5e-7)")
+          f"level's {one_level['stiffness_iterations'] / one_level['stiffness_solves']:.2f}")
     record_runs = {"geneo": geneo}
     for ranks, folder in runs.items():
         summary = summary_of(folder)
@@ -174,13 +181,13 @@ def main():
           f"TERM mid-run: exit {run.returncode} (143) {seconds:.1f} s after it, {said}, a rank left running: {alive}, "
           f"summary.json {'published' if os.path.exists(os.path.join(stopped, 'summary.json')) else 'not published'}")
     folder = os.path.join(TEST_RESULTS, "sleeve-3d-mpi-make")
-    made = subprocess.run(["make", "-s", "run", "SCENE=sleeve-3d", "NP=2", f"ARGS=-nr 2 -nt 4 -length 0.04 -quiet 1 -out {folder}"],
+    made = subprocess.run(["make", "-s", "run", "SCENE=sleeve-3d", "NP=2", f"ARGS=-nr 2 -nt 4 -length 0.04 -tend 20 -quiet 1 -out {folder}"],
                           cwd=ROOT, capture_output=True, text=True)
     figures = glob.glob(os.path.join(folder, "*.png"))
     check(made.returncode == 0 and summary_of(folder)["distributed"]["ranks"] == 2 and figures,
           f"make run SCENE=sleeve-3d NP=2: exit {made.returncode}, {len(figures)} figure(s) in {folder}")
     record("sleeve_3d_mpi", {"curve_differences": differences, "tight_loops_difference": tight,
-                             "geneo_difference": geneo_difference,
+                             
                              "distributed": record_runs, "refusals": refusals})
     finish()
 
