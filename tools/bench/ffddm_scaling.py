@@ -7,7 +7,8 @@ Weak: the layers along z doubled with the ranks (the same cells per rank). Then 
 the 2 cores, both ways, for their iteration counts only. Each run's error against the exact free
 dilatation, its GMRES iterations and its times; the speed-ups are ratios of runs made here one after the other. Writes
 results/bench/ffddm-sleeve-3d.json and docs/benchmarks/ffddm-sleeve-3d.md (a few minutes); then, on
-one rank, the contact's solves condensed against dual and the heat's steady state under refinement.
+one rank, the contact's solves condensed against dual and the heat's steady state under refinement;
+then sleeve-3d itself at its defaults, sequentially and on 1 and 2 ranks (edp/mpi/sleeve-3d.edp).
 
     tools/bench/ffddm_scaling.py [--nr 4 --nt 16 --nz 60]
 """
@@ -111,6 +112,7 @@ def measure(nr=4, nt=16, nz=60, ranks=(1, 2), oversubscribed=(4, 8)):
             key: [solve(p, nr, nt, layers, direct=key == "strong" and p == ranks[0] and not geneo, geneo=geneo, extra=extra)
                   for p, layers in plans[key]] for key in sequences}
     results["contact_heat"] = measure_contact_heat()
+    results["scene"] = measure_scene()
     save(results)
     return results
 
@@ -142,6 +144,74 @@ def measure_contact_heat():
     heat = {name: [dict(solve(1, nr, nt, nz, tol=1e-10, script=HEAT_SCRIPT, extra=("-steps", "1")), nr=nr, nt=nt, nz=nz)
                    for nr, nt, nz in meshes] for name, meshes in HEAT_MESHES.items()}
     return {"contact": contact, "heat": heat}
+
+
+# sleeve-3d itself at its defaults: sequentially (newton, the default; the nested loops, which the
+# distributed run takes) and on MPI ranks (edp/mpi/sleeve-3d.edp through tools/ff-mpi)
+SCENE_RUNS = (("sequential, newton", None, ()), ("sequential, nested loops", None, ("-stepsolver", "fixedpoint")),
+              ("1 rank", 1, ()), ("2 ranks", 2, ()), ("2 ranks, GenEO", 2, ("-ddmgeneo", "1")))
+
+
+def history_curve(folder):
+    """(t, pressure_mean) of a run's history.csv."""
+    with open(os.path.join(folder, "history.csv")) as f:
+        rows = [line.strip().split(",") for line in f if not line.startswith("#")]
+    t, p = rows[0].index("t"), rows[0].index("pressure_mean")
+    return [(float(r[t]), float(r[p])) for r in rows[1:]]
+
+
+def interpolated(curve, t):
+    for (t0, p0), (t1, p1) in zip(curve, curve[1:]):
+        if t0 <= t <= t1:
+            return p0 + (p1 - p0) * (t - t0) / (t1 - t0) if t1 > t0 else p1
+    return curve[-1][1] if t > curve[-1][0] else curve[0][1]
+
+
+def measure_scene():
+    """SCENE_RUNS one after the other: each run's loop time, steps, solves and GMRES iterations, and its
+    curve's largest difference to the sequential nested loops' (interpolated at their instants, over
+    the largest mean pressure)."""
+    runs = []
+    with tempfile.TemporaryDirectory(prefix="sma-ffddm-scene-") as scratch:
+        for k, (name, ranks, extra) in enumerate(SCENE_RUNS):
+            out = os.path.join(scratch, str(k))
+            if ranks is None:
+                cmd = [os.path.join(ROOT, "tools", "ff"), "edp/scenes/sleeve-3d.edp"]
+            else:
+                cmd = [os.path.join(ROOT, "tools", "ff-mpi"), str(ranks), "edp/mpi/sleeve-3d.edp"]
+            done = subprocess.run(cmd + ["-out", out, "-quiet", "1", *extra], cwd=ROOT, capture_output=True, text=True)
+            if done.returncode != 0:
+                sys.exit(f"error: ffddm_scaling: sleeve-3d, {name}: exit {done.returncode}: {(done.stdout + done.stderr)[-600:]}")
+            with open(os.path.join(out, "summary.json")) as f:
+                summary = json.load(f)
+            runs.append({"name": name, "seconds": summary["wall_seconds"], "steps": summary["n_steps"],
+                         "pressure_mid": summary["final_pressure_mid"], "distributed": summary.get("distributed"),
+                         "curve": history_curve(out)})
+    base = runs[1]["curve"]
+    scale = max(p for _, p in base)
+    for r in runs:
+        curve = r["curve"]
+        r["curve_difference"] = max(abs(interpolated(curve, t) - p) for t, p in base) / scale
+    for r in runs:
+        del r["curve"]
+    return runs
+
+
+def scene_lines(runs):
+    """The page's section on measure_scene()'s results."""
+    base = runs[1]["seconds"]
+    lines = ["", "sleeve-3d itself at its defaults (297 nodes, 891 dofs; `make run SCENE=sleeve-3d NP=2`, "
+             "docs/model.md#the-scene-on-ffddm), run one after the other: the loop's time, over the sequential nested "
+             "loops' (which the distributed run takes), and the curve's largest difference to theirs (the runs' step "
+             "control may take other steps):", "",
+             "| run | steps | loop (s) | time ratio | stiffness solves | GMRES iterations a solve | curve difference |",
+             "|---|---|---|---|---|---|---|"]
+    for r in runs:
+        d = r["distributed"]
+        solves = f"{d['stiffness_solves']} | {d['stiffness_iterations'] / d['stiffness_solves']:.1f}" if d else "- | -"
+        lines.append(f"| {r['name']} | {r['steps']} | {r['seconds']:.1f} | {r['seconds'] / base:.2f} | {solves} | "
+                     f"{r['curve_difference']:.1e} |")
+    return lines
 
 
 def contact_heat_lines(study):
@@ -259,6 +329,8 @@ def write_doc(results):
               "bound, 2e5 cells)."]
     if "contact_heat" in results:
         lines += contact_heat_lines(results["contact_heat"])
+    if "scene" in results:
+        lines += scene_lines(results["scene"])
     lines.append("")
     path = os.path.join(ROOT, "docs", "benchmarks", "ffddm-sleeve-3d.md")
     with open(path, "w") as f:
@@ -275,12 +347,17 @@ def main():
                         help="rewrite the page from the last results/bench/ffddm-sleeve-3d.json, running nothing")
     parser.add_argument("--contact-heat-only", action="store_true",
                         help="run only the contact's and the heat's study into the last results, then the page")
+    parser.add_argument("--scene-only", action="store_true",
+                        help="run only sleeve-3d sequentially and on ranks into the last results, then the page")
     opts = parser.parse_args()
-    if opts.doc_only or opts.contact_heat_only:
+    if opts.doc_only or opts.contact_heat_only or opts.scene_only:
         with open(os.path.join(ROOT, "results", "bench", "ffddm-sleeve-3d.json")) as f:
             results = json.load(f)
         if opts.contact_heat_only:
             results["contact_heat"] = measure_contact_heat()
+        if opts.scene_only:
+            results["scene"] = measure_scene()
+        if opts.contact_heat_only or opts.scene_only:
             save(results)
         write_doc(results)
     else:
