@@ -17,13 +17,15 @@ so that every run takes the same instants):
   residual_max); on one rank the preconditioner is the exact inverse (at most one GMRES iteration
   a solve), on two more than one (the subdomains are used);
 - the laws as the sequential scene reports them: gap >= -1e-6 of the interference, r gap <= 1e-6,
-  equilibrium residual <= 1e-9; rank 0 alone prints the report (tools/ff-mpi), and the other
-  rank's scratch results folder is gone;
+  equilibrium residual <= 1e-9; rank 0 alone prints the report (tools/ff-mpi);
 - refusals, once and without a hang: -bend (the stages need the plugin's factorisations) and an
   unknown option, named by the sequential first step; 3 ranks for 2 layers (a slab each), named by
   rank 0; an ffddm option this run does not set (-ffddm_overlap 2), by every rank; each exits
   non-zero within 60 s with no rank left running;
 - a TERM to tools/ff-mpi mid-run stops every rank (exit 143, said once, no summary.json published);
+  a solve at its iteration limit (-ffddm_max_it 1) stops every rank (MPI_Abort), said; every run's
+  temporary folders are gone after all of them (each run's own TMPDIR folder, removed by
+  tools/ff-mpi even when MPI_Abort skipped the ranks' exit handlers);
 - make run SCENE=sleeve-3d NP=2 runs it into the folder it names and draws its figures;
 - the MPI entry sets the scene's name and defaults (sleeveScene, sleeveDefaults) as the scene does.
 Writes results/checks/sleeve_3d_mpi.json.
@@ -32,12 +34,18 @@ import glob
 import os
 import signal
 import subprocess
+import shutil
 import sys
+import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from checklib import ROOT, TEST_RESULTS, check, finish, ranks_alive, record, rows, summary_of  # noqa: E402
 
+# Every run's temporary folders go under this test's own TMPDIR (tools/ff-mpi makes a folder of
+# the run's there and removes it), which must be empty at the end: after aborted runs too.
+SCRATCH = tempfile.mkdtemp(prefix="sma-mpi-test-")
+ENV = dict(os.environ, TMPDIR=SCRATCH)
 SMALL = ["-nr", "2", "-nt", "4", "-length", "0.04", "-tol", "0", "-steps", "100", "-quiet", "1"]
 TIGHT = ["-dctol", "1e-7", "-dcmaxit", "1000", "-fptol", "1e-11"]
 COLUMNS = ("pressure_mean", "T_inner_mean", "fraction_austenite")
@@ -48,7 +56,7 @@ def ranks_run(ranks, out, *args, timeout=300):
     timeout): (exit code or None, stdout + stderr, seconds, session)."""
     start = time.monotonic()
     run = subprocess.Popen([os.path.join(ROOT, "tools", "ff-mpi"), str(ranks), "edp/mpi/sleeve-3d.edp", "-out", out,
-                            *args], cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                            *args], cwd=ROOT, env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
                            start_new_session=True)
     try:
         output, _ = run.communicate(timeout=timeout)
@@ -88,7 +96,6 @@ def main():
     check(len(settings) == 2 and settings == scene_settings("edp/scenes/sleeve-3d.edp"),
           f"edp/mpi/sleeve-3d.edp sets the scene's name and defaults as edp/scenes/sleeve-3d.edp does: {settings}")
     out = os.path.join(TEST_RESULTS, "sleeve-3d-mpi")
-    before = set(glob.glob("/tmp/sma-sleeve-3d-rank1-*"))
     seq = sequential(out + "-seq", *SMALL)
     runs = {}
     for ranks in (1, 2):
@@ -144,8 +151,6 @@ def main():
               and summary["equilibrium_residual"] <= 1e-9,
               f"{ranks} rank(s): gap min {summary['contact_gap_min']:.1e}, r gap {summary['contact_complementarity_max']:.1e}, "
               f"equilibrium {summary['equilibrium_residual']:.1e}")
-    left = set(glob.glob("/tmp/sma-sleeve-3d-rank1-*")) - before
-    check(not left, f"rank 1's scratch results folder removed at its end ({sorted(left)} left)")
     refusals = {}
     for name, ranks, args, message in (
             ("-bend", 2, ["-bend", "1e-3"], "error: sleeve-3d on MPI ranks: -bend 0.001: the stages after the clamping"),
@@ -164,7 +169,8 @@ def main():
     # of the run's summary published.
     stopped = out + "-stopped"
     run = subprocess.Popen([os.path.join(ROOT, "tools", "ff-mpi"), "2", "edp/mpi/sleeve-3d.edp", "-out", stopped, "-quiet", "1"],
-                           cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, start_new_session=True)
+                           cwd=ROOT, env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                           start_new_session=True)
     time.sleep(4)
     run.send_signal(signal.SIGTERM)
     start = time.monotonic()
@@ -180,6 +186,19 @@ def main():
           and not os.path.exists(os.path.join(stopped, "summary.json")),
           f"TERM mid-run: exit {run.returncode} (143) {seconds:.1f} s after it, {said}, a rank left running: {alive}, "
           f"summary.json {'published' if os.path.exists(os.path.join(stopped, 'summary.json')) else 'not published'}")
+    # A solve at its iteration limit on every rank: each stops the others (MPI_Abort), said.
+    code, output, seconds, session = ranks_run(2, out + "-aborted", *SMALL, "-ffddm_max_it", "1", timeout=60)
+    errors = [line for line in output.splitlines() if line.startswith("error:")]
+    alive = ranks_alive(session)
+    # (each rank may say it before the abort stops the other; nothing else may be said: mpiexec,
+    # given the out-of-memory guard, called its own nonsense allocation an out of memory)
+    check(code == 1 and errors and all(e.startswith("error: distributed solve (the stiffness") for e in errors)
+          and not alive,
+          f"a distributed solve at its limit (-ffddm_max_it 1): exit {code} (1) in {seconds:.1f} s, {errors}, a rank "
+          f"left running: {alive}")
+    left = os.listdir(SCRATCH)
+    check(not left, f"every run's temporary folders removed, the aborted and the stopped runs' too ({left} left in TMPDIR)")
+    shutil.rmtree(SCRATCH, ignore_errors=True)
     folder = os.path.join(TEST_RESULTS, "sleeve-3d-mpi-make")
     made = subprocess.run(["make", "-s", "run", "SCENE=sleeve-3d", "NP=2", f"ARGS=-nr 2 -nt 4 -length 0.04 -tend 20 -quiet 1 -out {folder}"],
                           cwd=ROOT, capture_output=True, text=True)

@@ -9,12 +9,14 @@
 #pragma once
 
 #include <spawn.h>
+#include <sys/stat.h>
 #include <sys/types.h>
 #include <sys/wait.h>
 
 #include <stdlib.h>
 
 #include <cerrno>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -36,11 +38,24 @@ inline int run_shell(const std::string& command) {
   return -1;
 }
 
-// A new, empty directory /tmp/<prefix>XXXXXX of this process's own (mkdtemp), for a scene's
-// scratch runs; "" when it cannot be made (or the prefix holds a slash).
+// Where temporary folders go: $TMPDIR when it names an existing directory by an absolute path (the
+// POSIX convention; tools/ff-mpi gives its ranks a folder of the run's, which it removes even when
+// MPI_Abort skipped their exit handlers), else /tmp.
+inline std::string temporary_root() {
+  const char* dir = std::getenv("TMPDIR");
+  struct stat st {};
+  if (dir == nullptr || dir[0] != '/' || stat(dir, &st) != 0 || !S_ISDIR(st.st_mode)) return "/tmp";
+  std::string root(dir);
+  while (root.size() > 1 && root.back() == '/') root.pop_back();
+  return root;
+}
+
+// A new, empty directory <temporary_root()>/<prefix>XXXXXX of this process's own (mkdtemp), for a
+// scene's scratch runs; "" when it cannot be made (or the prefix holds a slash).
 inline std::string temporary_directory(const std::string& prefix) {
   if (prefix.find('/') != std::string::npos) return {};
-  std::string pattern = "/tmp/" + prefix + "XXXXXX";
+  const std::string root = temporary_root();
+  std::string pattern = root + (root == "/" ? "" : "/") + prefix + "XXXXXX";
   std::vector<char> name(pattern.begin(), pattern.end());
   name.push_back('\0');
   if (mkdtemp(name.data()) == nullptr) return {};

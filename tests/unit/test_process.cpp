@@ -4,6 +4,7 @@
 
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -53,7 +54,7 @@ TEST(TemporaryDirectory, NewEmptyAndOwn) {
   const std::string a = sma::process::temporary_directory("sma-test-"), b = sma::process::temporary_directory("sma-test-");
   ASSERT_FALSE(a.empty());
   EXPECT_NE(a, b);
-  EXPECT_EQ(a.rfind("/tmp/sma-test-", 0), 0U);
+  EXPECT_EQ(a.rfind(sma::process::temporary_root() + "/sma-test-", 0), 0U);
   struct stat st {};
   ASSERT_EQ(stat(a.c_str(), &st), 0);
   EXPECT_TRUE(S_ISDIR(st.st_mode));
@@ -61,6 +62,28 @@ TEST(TemporaryDirectory, NewEmptyAndOwn) {
   EXPECT_EQ(rmdir(a.c_str()), 0);       // (empty)
   EXPECT_EQ(rmdir(b.c_str()), 0);
   EXPECT_EQ(sma::process::temporary_directory("a/b"), "");
+}
+
+// $TMPDIR when it names an existing directory by an absolute path (trailing slashes dropped), else
+// /tmp: a relative, missing or empty TMPDIR is not taken.
+TEST(TemporaryDirectory, InTmpdir) {
+  const char* before = std::getenv("TMPDIR");
+  const std::string saved = before ? before : "";
+  char pattern[] = "/tmp/sma-tmpdir-XXXXXX";
+  ASSERT_NE(mkdtemp(pattern), nullptr);
+  const std::string root(pattern);
+  setenv("TMPDIR", (root + "//").c_str(), 1);
+  EXPECT_EQ(sma::process::temporary_root(), root);
+  const std::string inside = sma::process::temporary_directory("sma-test-");
+  EXPECT_EQ(inside.rfind(root + "/sma-test-", 0), 0U);
+  EXPECT_EQ(rmdir(inside.c_str()), 0);
+  for (const char* bad : {"relative/dir", "/tmp/sma-no-such-folder-here", ""}) {
+    setenv("TMPDIR", bad, 1);
+    EXPECT_EQ(sma::process::temporary_root(), "/tmp") << bad;
+  }
+  EXPECT_EQ(rmdir(root.c_str()), 0);
+  if (before) setenv("TMPDIR", saved.c_str(), 1);
+  else unsetenv("TMPDIR");
 }
 
 }  // namespace
