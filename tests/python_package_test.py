@@ -34,6 +34,10 @@
       or damaged, a time fields.pvd does not list, a column without a known unit (docs/errors.md,
       "The Python package"); a sweep with a run that fails (g = -1) names it, its other run
       published and returned with the error;
+  (h) run(..., ranks=2) runs the scene's edp/mpi script on 2 MPI ranks (sleeve-3d, a small mesh):
+      its summary's "distributed" entry says 2 ranks and GenEO as asked (ddmgeneo=1, an option of
+      the MPI run only); ranks for a scene without one, ranks=0, and a misspelt MPI option
+      (ddmtoll) are refused naming the culprit before any run;
   (g) the command-line modules are the package's: tools/sma_driver.py, results_io.py and children.py
       re-export the same objects; docs/python-api.md is what tools/docs/python_api.py generates, and
       every public function, class and method of the package has a docstring.
@@ -350,6 +354,23 @@ def error_checks(tmp, r, f):
     return errors
 
 
+def ranks_checks(tmp):
+    """(h)"""
+    out = sma.run("sleeve-3d", os.path.join(tmp, "np2"), ranks=2, nr=2, nt=4, length=0.04, tend=20, ddmgeneo=1)
+    distributed = sma.read(out).summary.get("distributed", {})
+    errors = {"no MPI run": error_of(lambda: sma.run("beam", os.path.join(tmp, "y"), ranks=2)),
+              "ranks 0": error_of(lambda: sma.run("sleeve-3d", os.path.join(tmp, "y"), ranks=0)),
+              "MPI option": error_of(lambda: sma.run("sleeve-3d", os.path.join(tmp, "y"), ranks=2, ddmtoll=1e-9))}
+    expected = {"no MPI run": "beam has no run on MPI ranks (ranks=): the scenes of edp/mpi have one: sleeve-3d",
+                "ranks 0": "sleeve-3d: ranks=0 must be a whole number of MPI ranks",
+                "MPI option": "sleeve-3d has no option -ddmtoll (did you mean -ddmtol"}
+    wrong = {k: errors[k] for k in expected if expected[k] not in errors[k]}
+    check(distributed.get("ranks") == 2 and distributed.get("geneo") == 1 and not wrong
+          and not os.path.exists(os.path.join(tmp, "y")),
+          f"(h) ranks=2: {distributed.get('ranks')} ranks, GenEO {distributed.get('geneo')}; refused before any run: "
+          + (f"wrong: {wrong}" if wrong else "; ".join(v.splitlines()[0][:60] for v in errors.values())))
+
+
 def main():
     os.makedirs(OUT, exist_ok=True)
     with tempfile.TemporaryDirectory(prefix="python-package-") as tmp:
@@ -359,6 +380,7 @@ def main():
         r, f = vtu_checks()
         table = sweep_checks()
         errors = error_checks(tmp, r, f)
+        ranks_checks(tmp)
     same = (sma_driver.run is sma.run and sma_driver.SceneError is sma.SceneError
             and tools_results_io.ResultsError is sma.results_io.ResultsError and tools_children.run is sma.children.run)
     api = subprocess.run([PYTHON, os.path.join(ROOT, "tools", "docs", "python_api.py"), "--check"], cwd=ROOT,

@@ -25,9 +25,10 @@ import numpy as np
 from . import children, frames, results_io, units, vtu
 from .errors import SceneError
 from .helptsv import parse_tsv
-from .repository import FF, ROOT
+from .repository import FF, FF_MPI, ROOT
 
 SCENE_FOLDERS = ("edp/scenes", "edp/variants")
+MPI_FOLDER = "edp/mpi"  # the scenes' runs on MPI ranks (run(..., ranks=2): tools/ff-mpi)
 LOG_LINES = 8  # the last lines of a failed run's log that an error quotes
 
 
@@ -58,15 +59,35 @@ def script(scene):
                      + f"; scenes: {' '.join(known)}")
 
 
+def launcher(scene, ranks=None):
+    """The words that start `scene`: tools/ff and its script, or with `ranks` (a whole number >= 1)
+    tools/ff-mpi on that many MPI ranks and the scene's edp/mpi script (sleeve-3d's: every
+    stiffness and heat solve through ffddm, docs/model.md#the-scene-on-ffddm)."""
+    path = script(scene)
+    if ranks is None:
+        return [FF, path]
+    if isinstance(ranks, bool) or not isinstance(ranks, numbers.Integral) or not 1 <= ranks <= 8 * (os.cpu_count() or 1):
+        raise SceneError(f"{scene}: ranks={ranks!r} must be a whole number of MPI ranks from 1 to "
+                         f"{8 * (os.cpu_count() or 1)}")
+    mpi = os.path.join(MPI_FOLDER, scene + ".edp")
+    if not os.path.isfile(os.path.join(ROOT, mpi)):
+        have = sorted(os.path.splitext(f)[0] for f in os.listdir(os.path.join(ROOT, MPI_FOLDER)) if f.endswith(".edp"))
+        raise SceneError(f"{scene} has no run on MPI ranks (ranks=): the scenes of {MPI_FOLDER} have one: "
+                         + " ".join(have))
+    return [FF_MPI, str(int(ranks)), mpi]
+
+
 _OPTIONS = {}
 
 
-def options(scene):
+def options(scene, ranks=None):
     """{name without the dash: {"type", "default", "meaning"}} of a scene, in the order it reads
-    them, from its `-help tsv` (cached: one FreeFEM start per scene and process)."""
-    if scene not in _OPTIONS:
-        path = script(scene)
-        help_run = subprocess.run([FF, path, "-help", "tsv"], cwd=ROOT, capture_output=True, text=True)
+    them, from its `-help tsv` (cached: one FreeFEM start per scene and process); with `ranks`, its
+    run on MPI ranks' (the scene's options, ffddm's and its own)."""
+    key = scene if ranks is None else (scene, "mpi")
+    if key not in _OPTIONS:
+        words = launcher(scene, None if ranks is None else 1)
+        help_run = subprocess.run(words + ["-help", "tsv"], cwd=ROOT, capture_output=True, text=True)
         if help_run.returncode != 0:
             raise SceneError(f"{scene}: -help tsv failed (exit {help_run.returncode}): "
                              + "\n".join((help_run.stdout + help_run.stderr).strip().splitlines()[-LOG_LINES:]))
@@ -74,13 +95,14 @@ def options(scene):
             parsed = parse_tsv(scene, help_run.stdout)
         except ValueError as e:
             raise SceneError(str(e)) from None
-        _OPTIONS[scene] = {o["name"][1:]: {k: o[k] for k in ("type", "default", "meaning")} for o in parsed}
-    return _OPTIONS[scene]
+        _OPTIONS[key] = {o["name"][1:]: {k: o[k] for k in ("type", "default", "meaning")} for o in parsed}
+    return _OPTIONS[key]
 
 
-def check_option(scene, name):
-    """Fails naming `name` and its close matches when the scene does not read -name."""
-    known = options(scene)
+def check_option(scene, name, ranks=None):
+    """Fails naming `name` and its close matches when the scene (on MPI ranks: its run there) does
+    not read -name."""
+    known = options(scene, ranks)
     if name not in known:
         close = difflib.get_close_matches(name, list(known), n=3)
         raise SceneError(f"{scene} has no option -{name}"
@@ -99,13 +121,13 @@ def is_temperature(option):
     return option["meaning"].startswith("K:") or "(K)" in option["meaning"]
 
 
-def word(scene, name, value):
+def word(scene, name, value, ranks=None):
     """An option value as FreeFEM's getARGV reads it, checked against the option's type (from the
     scene's -help): an int takes a Python int (or a numeric string of one), a real a finite int or
     float (or such a string; a temperature's string may end in its unit, "20C" or "293.15K"), a
     string a str; True/False only for a switch (is_switch); None, lists
     and other objects are refused, naming the option. Reals in full precision (repr)."""
-    option = options(scene)[name]
+    option = options(scene, ranks)[name]
     kind = option["type"]
 
     def refuse(why):
@@ -155,16 +177,21 @@ def word(scene, name, value):
     refuse(f"an option of unknown type {kind!r}")
 
 
-def command(scene, out, **values):
+def command(scene, out, ranks=None, **values):
     """The argument list that runs `scene` into `out` with the options `values` (name=value),
-    each name checked first."""
-    words = [FF, script(scene)]
+    each name checked first; on `ranks` MPI ranks with ranks (launcher)."""
+    words = launcher(scene, ranks)
     for name, value in values.items():
         if name == "out":
             raise SceneError(f"{scene}: give the output folder as run()'s `out`, not as an option")
-        check_option(scene, name)
-        words += ["-" + name, word(scene, name, value)]
+        check_option(scene, name, ranks)
+        words += ["-" + name, word(scene, name, value, ranks)]
     return words + ["-out", folder(out)]
+
+
+def given_options(words):
+    """The options of a command() (its words after the launcher and the script)."""
+    return words[3:] if words[0] == FF_MPI else words[2:]
 
 
 def folder(out):
@@ -182,44 +209,46 @@ def folder(out):
     return os.path.normpath(os.path.join(ROOT, path))
 
 
-def check(scene, out, **values):
+def check(scene, out, ranks=None, **values):
     """Checks what run(scene, out, **values) would run, in the scripts' check-only mode (-checkonly
     1: every check of a run, then exit where the run would take `out`; nothing written): raises
     SceneError with the scene's error line. A caller that takes a folder of its own before its
     runs (a sweep) checks them first: a run refusing its options after that would come after the
     folder's earlier results were deleted."""
-    words = command(scene, out, **values) + ["-checkonly", "1"]
+    words = command(scene, out, ranks, **values) + ["-checkonly", "1"]
     result = children.run(words, cwd=ROOT, capture_output=True, text=True)
     if result.returncode != 0:
         log = (result.stdout + "\n" + result.stderr).strip().splitlines()
         errors = [ln for ln in log if ln.startswith("error:")]
-        raise SceneError(f"{scene} {' '.join(words[2:-4])} is refused (exit {result.returncode})"
+        raise SceneError(f"{scene} {' '.join(given_options(words)[:-4])} is refused (exit {result.returncode})"
                          + (f": {errors[0][len('error:'):].strip()}" if errors else ": " + " / ".join(log[-3:])))
 
 
-def run(scene, out, quiet=True, notes=True, **values):
+def run(scene, out, quiet=True, notes=True, ranks=None, **values):
     """Runs the scene into `out` with the options `values` (g=1000, steps=300); returns `out` as an
-    absolute path (a relative `out` is taken from the repository root).
+    absolute path (a relative `out` is taken from the repository root). ranks=2: on 2 MPI ranks,
+    the scene's edp/mpi script through tools/ff-mpi (sleeve-3d: every solve through ffddm; its
+    options, ffddm's and ddmtol, ddmgeneo, with options(scene, ranks)).
     quiet=True adds -quiet 1 when the scene has that option (no line per step). The run's `note:`
     and `warning:` lines (a ring that never cleared the pipe, a loop that did not converge) are
     printed to stderr (notes=True), passed to `notes` when it is a function of the line, or
     dropped (False). Raises SceneError naming the scene and its options, with the run's error line
     and the last lines of its log."""
-    if quiet and "quiet" in options(scene) and "quiet" not in values:
+    if quiet and "quiet" in options(scene, ranks) and "quiet" not in values:
         values["quiet"] = 1
     path = folder(out)
-    words = command(scene, path, **values)
+    words = command(scene, path, ranks, **values)
     result = children.run(words, cwd=ROOT, capture_output=True, text=True)
     if result.returncode != 0:
         log = (result.stdout + "\n" + result.stderr).strip().splitlines()
         errors = [ln for ln in log if ln.startswith("error:")]
-        given = " ".join(words[2:])
+        given = " ".join(given_options(words))
         raise SceneError(f"{scene} {given} failed (exit {result.returncode})"
                          + (f": {errors[0][len('error:'):].strip()}" if errors else "")
                          + "\n  last lines of its log:\n    " + "\n    ".join(log[-LOG_LINES:]))
     written = os.path.join(path, "summary.json")
     if not os.path.isfile(written):
-        raise SceneError(f"{scene} {' '.join(words[2:])} exited 0 but wrote no {written}: nothing was computed")
+        raise SceneError(f"{scene} {' '.join(given_options(words))} exited 0 but wrote no {written}: nothing was computed")
     if notes:
         say = notes if callable(notes) else (lambda line: print(line, file=sys.stderr, flush=True))
         for line in (result.stdout + "\n" + result.stderr).splitlines():

@@ -11,6 +11,7 @@ import os
 PACKAGE = os.path.dirname(os.path.realpath(__file__))  # the physical folder (make python compares pwd -P)
 ROOT = os.path.dirname(os.path.dirname(PACKAGE))
 FF = os.path.join(ROOT, "tools", "ff")
+FF_MPI = os.path.join(ROOT, "tools", "ff-mpi")  # a scene's run on MPI ranks (edp/mpi)
 
 if not (os.path.isfile(FF) and os.path.isdir(os.path.join(ROOT, "edp", "scenes"))):
     raise ImportError(f"the sma package at {PACKAGE} is not inside a checkout of the SMA sleeves repository "
