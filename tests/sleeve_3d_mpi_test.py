@@ -42,6 +42,9 @@ import time
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from checklib import ROOT, TEST_RESULTS, check, finish, ranks_alive, record, rows, summary_of  # noqa: E402
 
+sys.path.insert(0, os.path.join(ROOT, "tools", "bench"))
+from ffddm_scaling import run_in_session  # noqa: E402
+
 # Every run's temporary folders go under this test's own TMPDIR (tools/ff-mpi makes a folder of
 # the run's there and removes it), which must be empty at the end: after aborted runs too.
 SCRATCH = tempfile.mkdtemp(prefix="sma-mpi-test-")
@@ -53,18 +56,11 @@ COLUMNS = ("pressure_mean", "T_inner_mean", "fraction_austenite")
 
 def ranks_run(ranks, out, *args, timeout=300):
     """tools/ff-mpi on `ranks` ranks into `out`, in a session of its own (stopped whole at the
-    timeout): (exit code or None, stdout + stderr, seconds, session)."""
+    timeout: ffddm_scaling.run_in_session): (exit code or None, stdout + stderr, seconds, session)."""
     start = time.monotonic()
-    run = subprocess.Popen([os.path.join(ROOT, "tools", "ff-mpi"), str(ranks), "edp/mpi/sleeve-3d.edp", "-out", out,
-                            *args], cwd=ROOT, env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                           start_new_session=True)
-    try:
-        output, _ = run.communicate(timeout=timeout)
-    except subprocess.TimeoutExpired:
-        os.killpg(run.pid, signal.SIGKILL)
-        output, _ = run.communicate()
-        return None, output, time.monotonic() - start, run.pid
-    return run.returncode, output, time.monotonic() - start, run.pid
+    code, output, session = run_in_session([os.path.join(ROOT, "tools", "ff-mpi"), str(ranks), "edp/mpi/sleeve-3d.edp",
+                                            "-out", out, *args], timeout, cwd=ROOT, env=ENV)
+    return code, output, time.monotonic() - start, session
 
 
 def sequential(out, *args):

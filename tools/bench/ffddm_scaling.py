@@ -26,6 +26,7 @@ import time
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 from markdown_wrap import wrap  # noqa: E402
+from results_io import read_csv  # noqa: E402
 SCRIPT = os.path.join(ROOT, "tools", "bench", "ffddm_sleeve_3d.edp")
 CONTACT_SCRIPT = os.path.join(ROOT, "tools", "bench", "ffddm_contact_3d.edp")
 HEAT_SCRIPT = os.path.join(ROOT, "tools", "bench", "ffddm_heat_3d.edp")
@@ -55,12 +56,18 @@ def ffddm_environment():
 
 
 def run_ranks(ranks, script, options, timeout, cwd=None):
-    """`script` under mpiexec on `ranks` ranks with `options`, mpiexec and its ranks in a session of
-    their own, stopped together when the run outlives `timeout` s (killing mpiexec alone could leave
-    ranks running): (exit code or None when stopped, its output, the session's id)."""
+    """`script` under mpiexec on `ranks` ranks with `options` (run_in_session): (exit code or None
+    when stopped, its output, the session's id)."""
     cmd = ["mpiexec", "--oversubscribe", "-np", str(ranks), "FreeFem++-mpi", "-nw", "-ne", script, "-v", "0",
            "-ffddm_verbosity", "0", *options]
-    run = subprocess.Popen(cmd, cwd=cwd, env=ffddm_environment(), stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+    return run_in_session(cmd, timeout, cwd=cwd, env=ffddm_environment())
+
+
+def run_in_session(cmd, timeout, cwd=None, env=None):
+    """`cmd` (an MPI launcher) and its children in a session of their own, stopped together when the
+    run outlives `timeout` s (killing mpiexec alone could leave ranks running): (exit code or None
+    when stopped, its output, the session's id)."""
+    run = subprocess.Popen(cmd, cwd=cwd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                            text=True, start_new_session=True)
     try:
         output, _ = run.communicate(timeout=timeout)
@@ -153,11 +160,9 @@ SCENE_RUNS = (("sequential, newton", None, ()), ("sequential, nested loops", Non
 
 
 def history_curve(folder):
-    """(t, pressure_mean) of a run's history.csv."""
-    with open(os.path.join(folder, "history.csv")) as f:
-        rows = [line.strip().split(",") for line in f if not line.startswith("#")]
-    t, p = rows[0].index("t"), rows[0].index("pressure_mean")
-    return [(float(r[t]), float(r[p])) for r in rows[1:]]
+    """(t, pressure_mean) of a run's history.csv (the plot tools' reader)."""
+    columns = read_csv(os.path.join(folder, "history.csv"))
+    return list(zip(columns["t"], columns["pressure_mean"]))
 
 
 def interpolated(curve, t):
