@@ -27,9 +27,18 @@ python3-setuptools python3-wheel jupyter-nbconvert python3-ipykernel python3-nbf
 # Arguments name packages wanted besides (make lab: jupyter-notebook, the browser front end).
 packages="$packages $*"
 
+# One dpkg-query for every package (one per package took a second, on every make target).
+installed=$(dpkg-query -W -f='${Package} ${Status}\n' $packages 2>/dev/null || true)
 missing=""
 for p in $packages; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
+  case "
+$installed
+" in
+    *"
+$p install ok installed
+"*) ;;
+    *) missing="$missing $p" ;;
+  esac
 done
 
 if [ -n "$missing" ]; then
