@@ -12,7 +12,7 @@ in $T/out (its marker and a summary.json) is still there byte for byte: every ch
 anything is deleted. Also asserts that the table covers every kind of bad input the project
 promises to catch, and that the commands in a SCENE or ARGS value never ran. The plugin cases use copies under $T through SMA_PLUGIN (tools/ff):
 a copy of the real plugin dated 2000 (stale), a plugin built here that reports version 2, the
-real one cut short (corrupt), a missing path; the real plugin/build/sma.so is never touched. The
+real one without its version stamp (unstamped), the real one cut short (corrupt), a missing path; the real plugin/build/sma.so is never touched. The
 broken meshes are made here from meshes/sleeve-aniso.msh (and gmsh, for MSH 4.1).
 Writes results/checks/bad_inputs.json.
 """
@@ -40,6 +40,7 @@ REQUIRED = ["unknown option", "T0 >= Tc", "omega", "mu < 0", "g < 0", "-gcontact
 
 FAKE_PLUGIN = """// A stand-in SMA plugin that reports version 2 (tests/bad_inputs_test.py).
 #include "ff++.hpp"
+extern "C" __attribute__((used)) const char sma_plugin_version_stamp[] = "sma-plugin-version 2;";
 static double SmaPluginVersion() { return 2.0; }
 static void Init() { Global.Add("SmaPluginVersion", "(", new OneOperator0<double>(SmaPluginVersion)); }
 LOADFUNC(Init)
@@ -121,7 +122,14 @@ def prepare(tmp):
         f.write('loadpath += "./"\n')
     os.makedirs(os.path.join(tmp, "corrupt"))
     with open(os.path.join(ROOT, "plugin", "build", "sma.so"), "rb") as f:
-        head = f.read(50000)
+        whole = f.read()
+    head = whole[:50000]
+    # The real plugin whose version stamp (plugin/glue/load.cpp) is overwritten, byte for byte.
+    stamp = b"sma-plugin-version "
+    check(whole.count(stamp) == 1, f"the real plugin holds its version stamp once ({whole.count(stamp)})")
+    os.makedirs(os.path.join(tmp, "unstamped"))
+    with open(os.path.join(tmp, "unstamped", "sma.so"), "wb") as f:
+        f.write(whole.replace(stamp, b"x" * len(stamp)))
     with open(os.path.join(tmp, "corrupt", "sma.so"), "wb") as f:
         f.write(head)
     broken_meshes(os.path.join(tmp, "meshes"))

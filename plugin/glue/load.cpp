@@ -74,7 +74,7 @@
 //       are FreeFEM's own (the script's numbers to the bit). Returns the number of points.
 //   long RoundToFloat(real[] x)   rounds every value to the nearest single-precision float
 //       (IEEE round to nearest even), in place; returns how many values changed.
-//   real SmaPluginVersion()  version stamp, checked by edp/lib/plugin.idp.
+//   real SmaPluginVersion()  version stamp, checked by edp/lib/plugin.idp (and, in the file, by the launchers).
 //   real WallSeconds()       monotonic wall clock (s), for timings.
 //   string RealDigits(real x, long digits)   x as a stream of precision `digits` writes it (an
 //       ofstream's `f.precision(12); f << x`), for a text built once and written many times.
@@ -169,10 +169,20 @@
 
 #include "glue/glue.hpp"
 
+// The plugin's version: SmaPluginVersion() for the scripts (edp/lib/plugin.idp), and a stamp in
+// the file that the launchers read before FreeFEM starts (tools/launcher-checks.sh): FreeFEM
+// compiles a whole script before running any of it, so a plugin that lacks a function the scene
+// calls stops at compilation ("The Identifier ... does not exist") before plugin.idp's check runs.
+#define SMA_PLUGIN_VERSION 21
+#define SMA_STRINGIFY(x) #x
+#define SMA_VERSION_STAMP(v) "sma-plugin-version " SMA_STRINGIFY(v) ";"
+extern "C" __attribute__((used, visibility("default")))
+const char sma_plugin_version_stamp[] = SMA_VERSION_STAMP(SMA_PLUGIN_VERSION);
+
 namespace sma_glue {
 namespace {
 
-double SmaPluginVersion() { return 21.0; }
+double SmaPluginVersion() { return SMA_PLUGIN_VERSION; }
 
 }  // namespace
 }  // namespace sma_glue

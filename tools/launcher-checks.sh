@@ -1,0 +1,84 @@
+# Sourced by tools/ff and tools/ff-mpi (not run): the checks both launchers make before FreeFEM
+# starts, with the same messages (docs/errors.md), and the removal of folders left by runs killed
+# outright. Each check stops the launcher (exit 3) naming the fix. Shell functions only: no program
+# is started where a parameter expansion does (each costs a run milliseconds).
+
+# require_sma_plugin ROOT: the SMA plugin ($SMA_PLUGIN, else ROOT/plugin/build/sma.so) built, a
+# whole shared library, newer than its sources, of the scripts' version; sets $plugin and
+# $plugin_dir (its folder, for FF_LOADPATH).
+require_sma_plugin() {
+  plugin="${SMA_PLUGIN:-$1/plugin/build/sma.so}"
+  case "$plugin" in
+    */sma.so) ;;
+    *) echo "error: SMA_PLUGIN='$plugin' must name a file called sma.so (FreeFEM loads \"sma\")" >&2; exit 3 ;;
+  esac
+  if [ ! -f "$plugin" ]; then
+    echo "error: the SMA plugin is not built ($plugin missing): run 'make plugin'" >&2
+    exit 3
+  fi
+  # A plugin cut short or overwritten (a failed copy, a full disk during the build) would kill
+  # FreeFEM with SIGBUS or SIGILL at load, without a word: readelf reads its section table, which
+  # sits at the end of the file.
+  # (readelf exits 0 on some damage and says so on stderr only: a failure or any complaint counts;
+  # it runs without the user's LD_PRELOAD, whose missing library the loader complains of on stderr:
+  # that complaint is the loader's about LD_PRELOAD, printed again as FreeFEM starts, not the plugin's.)
+  if ! complaint=$(LD_PRELOAD= readelf -S "$plugin" 2>&1 > /dev/null) || [ -n "$complaint" ]; then
+    echo "error: the SMA plugin $plugin is not a valid shared library (corrupt or cut short): run 'make plugin'" >&2
+    exit 3
+  fi
+  for src in "$1"/plugin/glue/*.cpp "$1"/plugin/glue/*.hpp "$1"/plugin/core/*.hpp; do
+    if [ "$src" -nt "$plugin" ]; then
+      echo "error: the SMA plugin is out of date ($src is newer than $plugin): run 'make plugin'" >&2
+      exit 3
+    fi
+  done
+  # FreeFEM reads ./freefem++.pref (make writes one here, naming plugin/build) before FF_LOADPATH:
+  # from such a directory the override would silently load the real plugin.
+  if [ -n "$SMA_PLUGIN" ] && [ -f freefem++.pref ] && grep -q loadpath freefem++.pref; then
+    echo "error: SMA_PLUGIN cannot take effect here: ./freefem++.pref puts its own plugin path first; run from another directory" >&2
+    exit 3
+  fi
+  # The version the scripts expect (edp/lib/plugin.idp), read here from the plugin's stamp
+  # (plugin/glue/load.cpp): FreeFEM compiles a whole script before it runs any of it, so a plugin
+  # lacking a function the scene calls stopped at compilation ("The Identifier ... does not
+  # exist"), before plugin.idp's own check could speak.
+  expected=$(sed -n 's/.*SmaPluginVersion() == \([0-9]*\).*/\1/p' "$1/edp/lib/plugin.idp")
+  if [ -z "$expected" ]; then
+    echo "error: $1/edp/lib/plugin.idp names no plugin version (its check 'SmaPluginVersion() == N')" >&2
+    exit 3
+  fi
+  stamp=$(grep -a -o -m 1 'sma-plugin-version [0-9]*;' "$plugin")
+  stamp=${stamp#sma-plugin-version }
+  stamp=${stamp%;}
+  if [ -z "$stamp" ]; then
+    echo "error: the SMA plugin $plugin has no version stamp (not this suite's, or built before the stamp): run 'make plugin'" >&2
+    exit 3
+  fi
+  if [ "$stamp" != "$expected" ]; then
+    echo "error: the SMA plugin $plugin has version $stamp, the scripts expect $expected (edp/lib/plugin.idp): run 'make plugin'" >&2
+    exit 3
+  fi
+  plugin_dir=${plugin%/*}  # (plugin ends in /sma.so: checked above)
+  plugin_dir=${plugin_dir:-/}
+}
+
+# require_built ROOT NAME SOURCE [HINT]: ROOT/plugin/build/NAME built from ROOT/SOURCE and not
+# older than it; HINT adds to the message.
+require_built() {
+  if [ ! -f "$1/plugin/build/$2" ] || [ "$1/$3" -nt "$1/plugin/build/$2" ]; then
+    echo "error: $1/plugin/build/$2 is missing or older than $3: run 'make plugin'$4" >&2
+    exit 3
+  fi
+}
+
+# remove_stale_folders PREFIX: a launcher killed outright (KILL, which no trap sees: a job
+# manager's hard stop) leaves its temporary folder ${TMPDIR:-/tmp}/PREFIX.*; each run first
+# removes those whose owner (the pid written in them) is gone.
+remove_stale_folders() {
+  for stale in "${TMPDIR:-/tmp}/$1".*/pid; do
+    [ -f "$stale" ] || continue
+    owner=$(cat "$stale" 2>/dev/null)
+    case "$owner" in ''|*[!0-9]*) continue ;; esac
+    [ -d "/proc/$owner" ] || rm -rf "${stale%/pid}" 2>/dev/null
+  done
+}
