@@ -1,6 +1,6 @@
 # SMA coupling sleeves (Pagano, Alart, Lebon 1998): FreeFEM scenes with a C++ load plugin.
 #   make run  [SCENE=<scene>] [ARGS='-name value ...']   install, build, run a scene, draw its figures
-#                                                        (SCENE may also name a variant of edp/variants)
+#             [OUT=dir]                                  (SCENE may also name a variant of edp/variants)
 #                                                        (ARGS=-help: list the scene's options only)
 #   make run SCENE=sleeve-3d NP=2 [ARGS=...]             the same scene on NP MPI ranks, its solves through
 #                                                        ffddm (edp/mpi/sleeve-3d.edp), into results/sleeve-3d-np2
@@ -21,6 +21,8 @@
 #                                                        the user, editable and offline: `import sma` from anywhere
 #   make help                                            this list, the scenes and variants, and where to start
 SHELL := /bin/bash
+# A user's CDPATH sends a relative `cd` to a folder it names (tools/ff says more): never the recipes'.
+unexport CDPATH
 .DEFAULT_GOAL := run
 
 SCENES := $(sort $(basename $(notdir $(wildcard edp/scenes/*.edp))))
@@ -244,16 +246,20 @@ RUN_PLOT = $(if $(wildcard tools/plot/plot_$(SCENE).py),$(PYTHON) tools/plot/plo
 # NP on make's command line (not NP in the environment, nor make ensemble's default) runs the scene's
 # distributed version, edp/mpi/$(SCENE).edp, on NP ranks (tools/ff-mpi); NP reaches run_scene.py,
 # which checks it is a whole number, through the environment.
+# OUT=dir (given on the command line or in the environment, as make sweep's) names the results
+# folder, as ARGS='-out dir' does; make run ignored it before, writing elsewhere without a word.
 run: export RUN_ARGS := $(value ARGS)
+run: export RUN_OUT := $(value OUT)
 run: export RUN_NP := $(if $(filter command line,$(origin NP)),$(value NP))
+RUN_OUT_OPTION = $(if $(filter command line environment environment override override,$(origin OUT)),--env-out RUN_OUT)
 run: check-scene plugin meshes
 	@if [ -z "$$RUN_NP" ]; then \
-	  $(PYTHON) tools/run_scene.py --env-args RUN_ARGS $(RUN_SCRIPT) $(RUN_RESULTS) $(RUN_PLOT); \
+	  $(PYTHON) tools/run_scene.py --env-args RUN_ARGS $(RUN_OUT_OPTION) $(RUN_SCRIPT) $(RUN_RESULTS) $(RUN_PLOT); \
 	elif [ ! -f edp/mpi/$(SCENE).edp ]; then \
 	  echo "error: SCENE=$(SCENE) has no distributed run (NP=...): the scenes of edp/mpi/ have one:" \
 	    "$(notdir $(basename $(wildcard edp/mpi/*.edp)))" >&2; exit 2; \
 	else \
-	  $(PYTHON) tools/run_scene.py --env-args RUN_ARGS --ranks "$$RUN_NP" edp/mpi/$(SCENE).edp \
+	  $(PYTHON) tools/run_scene.py --env-args RUN_ARGS $(RUN_OUT_OPTION) --ranks "$$RUN_NP" edp/mpi/$(SCENE).edp \
 	    "$(RUN_RESULTS)-np$$(printf '%s' "$$RUN_NP" | tr -c '0-9' _)" $(RUN_PLOT); \
 	fi
 

@@ -36,7 +36,7 @@ REQUIRED = ["unknown option", "T0 >= Tc", "omega", "mu < 0", "g < 0", "-gcontact
             "shell metacharacters", "option without its value", "not a number", "integer option",
             "MSH 4", "cut off", "clockwise", "labels swapped", "another directory", "corrupt plugin",
             "no such script", "overflows a double", "theta", "in Celsius", "user's own files",
-            "shell syntax in ARGS", "offset beyond the interference", "exact ring differs"]
+            "shell syntax in ARGS", "offset beyond the interference", "exact ring differs", "TMPDIR"]
 
 FAKE_PLUGIN = """// A stand-in SMA plugin that reports version 2 (tests/bad_inputs_test.py).
 #include "ff++.hpp"

@@ -5,7 +5,8 @@
 # /usr/lib/ff++/4.9/..., which does not exist (the files are in /usr/lib/freefem++ and
 # /usr/include/freefem++/idp). tools/ff sets the same paths through FF_LOADPATH/FF_INCLUDEPATH.
 set -eu
-root=$(cd "$(dirname "$0")/.." && pwd)
+unset CDPATH  # (a user's CDPATH would send the relative cd below elsewhere: tools/ff says more)
+root=$(cd -- "$(dirname "$0")/.." && pwd)
 
 # python3-getfem is used only by make bench and tests/getfem_lame_test.py (tools/bench/oracles/getfem_lame.py:
 # ring-lame solved by GetFEM, the independent solver our pressure and speed are compared with):

@@ -82,3 +82,19 @@ remove_stale_folders() {
     [ -d "/proc/$owner" ] || rm -rf "${stale%/pid}" 2>/dev/null
   done
 }
+
+# require_tmpdir: $TMPDIR, where the launcher makes its temporary folder (and the plugin its
+# scratch folders), an existing directory when set; a relative one made absolute (the plugin
+# follows only an absolute TMPDIR) and exported.
+require_tmpdir() {
+  [ -n "$TMPDIR" ] || return 0
+  if [ ! -d "$TMPDIR" ] || [ ! -w "$TMPDIR" ]; then
+    echo "error: TMPDIR='$TMPDIR' is not a directory this run can write in (the launcher's temporary folder goes there): create it, or unset TMPDIR" >&2
+    exit 3
+  fi
+  case "$TMPDIR" in
+    /*) ;;
+    *) TMPDIR=$(cd -- "$TMPDIR" && pwd) || exit 3 ;;
+  esac
+  export TMPDIR
+}

@@ -4,7 +4,7 @@
 Usage (the Makefile's):
   tools/run_scene.py [--env-args VAR] [--env-out VAR] [--mpi NP --seeds N] SCRIPT DEFAULT_OUT [PLOT COMMAND ...]
     --env-args VAR  the user's ARGS, read from the environment variable VAR (make run: RUN_ARGS)
-    --env-out VAR   an output folder the user gave (make ensemble's OUT), read from VAR: one word
+    --env-out VAR   an output folder the user gave (make run's and make ensemble's OUT), read from VAR: one word
     --mpi NP        run on NP MPI ranks (mpiexec --oversubscribe -np NP FreeFem++-mpi -nw -ne)
                     instead of tools/ff
     --seeds N       put -v 0 -seeds N before the user's words (make ensemble)
@@ -137,7 +137,9 @@ def main(argv):
         print(f"error: '{home[0]}': ~ is not expanded (no shell reads ARGS or OUT): give the folder's full "
               "path, e.g. $HOME/...", file=sys.stderr)
         return 2
-    named = None if opts["mpi"] is not None or "-help" in words else named_folder(default_out, user)
+    # (OUT given names the folder: make run's OUT=dir as ARGS='-out dir')
+    named = None if opts["mpi"] is not None or "-help" in words or out_given is not None \
+        else named_folder(default_out, user)
     if named:
         print(f"{os.path.basename(default_out)} with {' '.join(user)}: results in {named}/ (the defaults' "
               f"{default_out}/ is left as it is; -out names another folder)")
