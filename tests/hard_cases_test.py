@@ -7,7 +7,9 @@ unless said otherwise; about 40 s.
    Interference 0: final pressure 0 (Lame with delta = 0) to 1e-9 of the 55 um fit, no
    penetration, complementarity, no change of the contact set once the ring is austenite for good;
    +0.1 um: the final pressure is the 55 um one scaled by 0.1/55 (the final state is linear
-   elastic) to 1e-6; -0.1 um: never touches.
+   elastic) to 1e-6; -0.1 um: never touches. sleeve-3d at interference 0 (nr 1, nt 4, L 4 cm):
+   runs through, final pressure 0, its laws; bent 1e-3 rad in 2 increments, a leak path opens at
+   the first (the leak detection's positive case).
 2. Friction mu = 0.5 and 1.0 beside 0 and 0.2 (sleeve-elliptic-friction): every node inside the
    Coulomb cone |t| <= mu n (1 + 1e-8), Signorini from the end displacement (no penetration,
    gap 0 where the normal force is > 0), a node that slipped over the last step is on the cone
@@ -37,7 +39,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools", "bench", "oracles"))
 
-from checklib import KELVIN_AT_0C, REDUCED, ROOT, SLEEVE_SCENES, TEST_RESULTS, check, finish, record, run_scene, sleeve_outputs, sleeve_geometry  # noqa: E402
+from checklib import KELVIN_AT_0C, REDUCED, ROOT, SLEEVE_SCENES, TEST_RESULTS, check, finish, read_json, record, run_scene, run_scene_captured, sleeve_outputs, sleeve_geometry  # noqa: E402
 from lame import lame_pressure  # noqa: E402
 
 COARSE = ["-mesh", "meshes/sleeve-coarse.msh", "-quiet", "1"]
@@ -144,11 +146,34 @@ def grazing(reference):
     never = max(float(r["pressure_max"]) for r in minus["history"])
     check(minus["summary"]["first_contact_step"] is None and never == 0,
           f"-0.1 um clearance: never touches (largest pressure over the run {never} Pa)")
+    # The 3D scene at interference 0 (a small mesh), clamped, then bent: its laws' gaps are measured
+    # against a millionth of the bore's radius (it divided by the interference 0 and stopped after
+    # the run), and bending the unclamped joint opens a leak path from the first increment (the
+    # pipe presses the bore at the mid-plane on one side and at the free end on the other; nothing
+    # holds the rest closed).
+    out3d, done = run_scene_captured("sleeve-3d", "hard-grazing-3d", "-interference", "0", "-nr", "1", "-nt", "4",
+                                     "-length", "0.04", "-bend", "1e-3", "-bendsteps", "2", "-quiet", "1")
+    s3 = read_json(os.path.join(out3d, "summary.json")) if done.returncode == 0 else {}
+    bend = s3.get("bending", {})
+    check(done.returncode == 0 and abs(s3["final_pressure_node_max"]) <= 1e-9 * p55
+          and s3["contact_gap_min"] >= -1e-6 and s3["contact_complementarity_max"] <= 1e-6,
+          f"sleeve-3d at interference 0: exit {done.returncode}, final pressure {s3.get('final_pressure_node_max')} Pa, "
+          f"gap {s3.get('contact_gap_min')} and r_n |gap| {s3.get('contact_complementarity_max')} (over 1e-6 Ri) "
+          f"{done.stdout.strip()[-200:] if done.returncode else ''}")
+    check(bend.get("leak_path_angle") == 5e-4 and bend.get("gap_min", -1) >= -1e-6
+          and bend.get("complementarity_max", 1) <= 1e-6 and bend.get("cone_excess_max", 1) <= 1e-8
+          and bend.get("moment_balance_max", 1) <= 1e-9,
+          f"sleeve-3d at interference 0 bent 1e-3 rad: a leak path from the first increment "
+          f"({bend.get('leak_path_angle')} rad, {bend.get('nodes_open_final')} nodes open), laws and moment balance "
+          f"({bend.get('gap_min')}, {bend.get('complementarity_max')}, {bend.get('cone_excess_max')}, "
+          f"{bend.get('moment_balance_max')})")
     return {"interference_0": dict(sig, final_pressure_max_Pa=pmax, contact_set_changes_at_steps=changes,
                                    austenite_step=settled, first_contact_step=s["first_contact_step"],
                                    iterations=iteration_stats(zero["history"])),
             "plus_0p1um_final_pressure_Pa": plus, "plus_0p1um_scaling_error": scale,
-            "reference_55um_final_pressure_Pa": p55}
+            "reference_55um_final_pressure_Pa": p55, "sleeve_3d_interference_0": {
+                "final_pressure_node_max_Pa": s3.get("final_pressure_node_max"),
+                "leak_path_angle": bend.get("leak_path_angle"), "nodes_open_final": bend.get("nodes_open_final")}}
 
 
 def friction():
