@@ -19,8 +19,8 @@ so that every run takes the same instants):
 - the laws as the sequential scene reports them: gap >= -1e-6 of the interference, r gap <= 1e-6,
   equilibrium residual <= 1e-9; rank 0 alone prints the report (tools/ff-mpi);
 - refusals, once and without a hang: -bend (the stages need the plugin's factorisations) and an
-  unknown option, named by the sequential first step; 3 ranks for 2 layers (a slab each), named by
-  rank 0; an ffddm option this run does not set (-ffddm_overlap 2), by every rank; each exits
+  unknown option, named by the sequential first step; 3 ranks for 2 layers and 2 ranks for 3 (a
+  slab of at least 2 layers each), named by rank 0; an ffddm option this run does not set (-ffddm_overlap 2), by every rank; each exits
   non-zero within 60 s with no rank left running;
 - a TERM to tools/ff-mpi mid-run stops every rank (exit 143, said once, no summary.json published);
   a solve at its iteration limit (-ffddm_max_it 1) stops every rank (MPI_Abort), said; every run's
@@ -151,7 +151,10 @@ def main():
     for name, ranks, args, message in (
             ("-bend", 2, ["-bend", "1e-3"], "error: sleeve-3d on MPI ranks: -bend 0.001: the stages after the clamping"),
             ("3 ranks, 2 layers", 3, ["-nr", "1", "-length", "0.04"],
-             "error: sleeve-3d on MPI ranks: 3 ranks, a slab of the length along z each, for 2 element layers"),
+             "error: sleeve-3d on MPI ranks: 3 ranks, a slab of at least 2 element layers along z each, for 2 element layers"),
+            ("2 ranks, 3 layers (one slab of one layer stopped ffddm on an assertion)", 2,
+             ["-nr", "1", "-length", "0.04", "-nz", "3"],
+             "error: sleeve-3d on MPI ranks: 2 ranks, a slab of at least 2 element layers along z each, for 3 element layers"),
             ("an unknown option", 2, ["-stpes", "30"], "error: sleeve-3d: unknown option -stpes (did you mean -steps?"),
             ("ffddm's overlap", 2, ["-ffddm_overlap", "2"], "error: sleeve-3d on MPI ranks: -ffddm_overlap 2: this run takes only ffddm's default 1")):
         code, output, seconds, session = ranks_run(ranks, out + "-refused", *args, timeout=60)
