@@ -41,6 +41,18 @@ inline ContactGeometry ellipse_gap(double px, double py, double cx, double cy, d
   auto df = [&](double t) {
     return (B * B - A * A) * std::cos(2 * t) + A * x * std::cos(t) + B * y * std::sin(t);
   };
+  // A point on an axis whose closest point is that axis's vertex (not beyond the evolute's cusp,
+  // where two points off the axis are closer): the vertex and its normal exactly. Newton's t for
+  // pi / 2 leaves cos t = 6e-17, a normal tilted by round-off (n_x = 6e-17 at x = 0), which the
+  // 3D model's e_theta rows read as a motion of a held component.
+  if (x == 0 && B * y >= B * B - A * A) {
+    const double inside = (y / B) * (y / B) - 1.0;
+    return {inside < 0 ? -std::fabs(y - B) : std::fabs(y - B), 0.0, sy};
+  }
+  if (y == 0 && A * x >= A * A - B * B) {
+    const double inside = (x / A) * (x / A) - 1.0;
+    return {inside < 0 ? -std::fabs(x - A) : std::fabs(x - A), sx, 0.0};
+  }
   double lo = 0.0, hi = M_PI / 2;
   double t = std::atan2(A * y, B * x);
   for (int it = 0; it < 100; ++it) {

@@ -60,3 +60,35 @@ TEST(Obstacle, EllipseClosestPointMatchesBruteForce) {
     }
   }
 }
+
+TEST(Obstacle, EllipseNormalOnAnAxisIsExact) {
+  // On an axis, outside the evolute's cusp, the closest point is the vertex: the normal is the
+  // axis itself, with no round-off component across it (Newton's t for pi / 2 gave 6e-17).
+  const double axes[][2] = {{0.0504, 0.0505}, {0.0505, 0.0504}, {0.05, 0.02}, {0.02, 0.05}};
+  for (auto& ab : axes) {
+    const double A = ab[0], B = ab[1];
+    for (double scale : {0.9999, 1.0, 1.03, 2.0}) {
+      for (double sign : {1.0, -1.0}) {
+        // (inside the evolute's cusp the closest points are off the axis: not this case)
+        const double y = sign * scale * B;
+        if (B * std::fabs(y) >= B * B - A * A) {
+          const sma::ContactGeometry g = sma::ellipse_gap(0.003, 0.004 + y, 0.003, 0.004, A, B);
+          EXPECT_EQ(g.nx, 0.0) << A << " " << B << " y " << y;
+          EXPECT_EQ(g.ny, sign);
+          EXPECT_NEAR(g.gap, std::fabs(y) - B, 1e-15);
+        }
+        const double x = sign * scale * A;
+        if (A * std::fabs(x) >= A * A - B * B) {
+          const sma::ContactGeometry h = sma::ellipse_gap(0.003 + x, 0.004, 0.003, 0.004, A, B);
+          EXPECT_EQ(h.ny, 0.0) << A << " " << B << " x " << x;
+          EXPECT_EQ(h.nx, sign);
+          EXPECT_NEAR(h.gap, std::fabs(x) - A, 1e-15);
+        }
+      }
+    }
+  }
+  // Inside the cusp on the major axis: the closest points are off the axis, as the sampling finds.
+  const sma::ContactGeometry c = sma::ellipse_gap(0.0, 0.005, 0.0, 0.0, 0.02, 0.05);
+  EXPECT_NE(c.nx, 0.0);
+  EXPECT_LT(std::fabs(c.gap), 0.05 - 0.005);
+}
