@@ -13,6 +13,8 @@ so that every run takes the same instants):
   ranks with GenEO's coarse space, -ddmgeneo 1) it falls below 5e-7 (measured 1.5e-7), and by more
   than 10 times; GenEO's coarse space has some vectors and takes fewer GMRES iterations a solve
   than one level (measured 6.6 against 9.1);
+- the contact's columns S K^-1 S H': kept on 2 ranks (their product a global step), solved for on
+  1 rank (-ddmcolumnsmb 0: a second solve a global step, about twice the solves), the same curves;
 - the solves: every one within 100 x -ddmtol of the scene's matrix (summary.json "distributed"
   residual_max); on one rank the preconditioner is the exact inverse (at most one GMRES iteration
   a solve), on two more than one (the subdomains are used);
@@ -95,7 +97,9 @@ def main():
     seq = sequential(out + "-seq", *SMALL)
     runs = {}
     for ranks in (1, 2):
-        code, output, seconds, _ = ranks_run(ranks, f"{out}-np{ranks}", *SMALL)
+        # (1 rank without the contact's kept columns, -ddmcolumnsmb 0: a solve a global step instead)
+        columns = ["-ddmcolumnsmb", "0"] if ranks == 1 else []
+        code, output, seconds, _ = ranks_run(ranks, f"{out}-np{ranks}", *SMALL, *columns)
         check(code == 0, f"{ranks} rank(s): exit {code} in {seconds:.1f} s")
         if code != 0:
             print(output[-3000:])
@@ -125,6 +129,12 @@ def main():
           f"GenEO on 2 ranks: exit {code}, coarse space {geneo and geneo['coarse_space']}, "
           f"{geneo and geneo['stiffness_iterations'] / geneo['stiffness_solves']:.2f} GMRES iterations a solve against one "
           f"level's {one_level['stiffness_iterations'] / one_level['stiffness_solves']:.2f}")
+    kept, solved = summary_of(runs[2])["distributed"], summary_of(runs[1])["distributed"]
+    check(kept["contact_columns"] == "kept" and solved["contact_columns"] == "solved"
+          and solved["stiffness_solves"] > 1.6 * kept["stiffness_solves"],
+          f"the contact's columns: kept on 2 ranks ({kept['contact_columns_mb']:.3f} MB), solved for on 1 rank with "
+          f"-ddmcolumnsmb 0: {solved['stiffness_solves']} stiffness solves against {kept['stiffness_solves']} (a second a "
+          "global step), the curves equal above")
     record_runs = {"geneo": geneo}
     for ranks, folder in runs.items():
         summary = summary_of(folder)
