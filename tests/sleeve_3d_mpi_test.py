@@ -20,7 +20,7 @@ so that every run takes the same instants):
   a solve), on two more than one (the subdomains are used);
 - the laws as the sequential scene reports them: gap >= -1e-6 of the interference, r gap <= 1e-6,
   equilibrium residual <= 1e-9; rank 0 alone prints the report (tools/ff-mpi);
-- refusals, once and without a hang (no rank left running): an unknown option, named by the
+- refusals, once, alone and without a hang (no rank left running): an unknown option, named by the
   sequential first step; 2 ranks for 3 layers (a slab of at least 2 layers each), named by rank 0
   (docs/errors.md's cases, run by bad_inputs_test, add -bend and 3 ranks for 2 layers); an ffddm
   option this run does not set (-ffddm_overlap 2), by every rank; each exits non-zero within 60 s;
@@ -167,10 +167,13 @@ def main():
         code, output, seconds, session = ranks_run(ranks, out + "-refused", *args, timeout=60)
         errors = [line for line in output.splitlines() if line.startswith("error:")]
         alive = ranks_alive(session)
-        refusals[name] = {"exit": code, "seconds": seconds, "errors": errors, "left_running": alive}
-        check(code not in (None, 0) and len(errors) == 1 and errors[0].startswith(message) and not alive,
+        # (and nothing besides: FreeFEM's call trace and mpiexec's banner of an aborted job, 17
+        # lines after the error, are dropped as tools/ff drops the trace)
+        others = [line for line in output.splitlines() if line.strip() and not line.startswith("error:")]
+        refusals[name] = {"exit": code, "seconds": seconds, "errors": errors, "left_running": alive, "other_lines": others}
+        check(code not in (None, 0) and len(errors) == 1 and errors[0].startswith(message) and not alive and not others,
               f"refused, {name}: exit {code} in {seconds:.1f} s, {len(errors)} error line(s) {errors[:1]}, a rank left "
-              f"running: {alive}")
+              f"running: {alive}, other lines {others[:3]}")
     # A TERM to tools/ff-mpi mid-run (a job manager's stop): every rank stopped, said once, nothing
     # of the run's summary published.
     stopped = out + "-stopped"

@@ -170,7 +170,7 @@
 #include "glue/glue.hpp"
 
 // The plugin's version: SmaPluginVersion() for the scripts (edp/lib/plugin.idp), and a stamp in
-// the file that the launchers read before FreeFEM starts (tools/launcher-checks.sh): FreeFEM
+// the file that the launchers read before FreeFEM starts (tools/launcher-common.sh): FreeFEM
 // compiles a whole script before running any of it, so a plugin that lacks a function the scene
 // calls stops at compilation ("The Identifier ... does not exist") before plugin.idp's check runs.
 #define SMA_PLUGIN_VERSION 21

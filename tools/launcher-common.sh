@@ -1,6 +1,6 @@
 # Sourced by tools/ff and tools/ff-mpi (not run): the checks both launchers make before FreeFEM
-# starts, with the same messages (docs/errors.md), and the removal of folders left by runs killed
-# outright. Each check stops the launcher (exit 3) naming the fix. Shell functions only: no program
+# starts, with the same messages (docs/errors.md), the removal of folders left by runs killed
+# outright, and the filter of FreeFEM's output. Each check stops the launcher (exit 3) naming the fix. Shell functions only: no program
 # is started where a parameter expansion does (each costs a run milliseconds).
 
 # require_sma_plugin ROOT: the SMA plugin ($SMA_PLUGIN, else ROOT/plugin/build/sma.so) built, a
@@ -98,3 +98,22 @@ require_tmpdir() {
   esac
   export TMPDIR
 }
+
+# FreeFEM's output without the call trace it prints after a script's own exit: exit(1) after an
+# `error:` line, or exit(0) (-help, -checkonly): "  current line = N", " call F  at  line N",
+# "exit(N)", " err code N ,  mpirank 0", six lines after every error that said nothing the error
+# line does not. After any other exit (an execution error, an internal one) the trace is kept: it
+# says where. (FreeFem++-mpi's first line reads "  current line = N mpirank R / S".)
+untraced='
+  function trailer(line) {
+    return line ~ /^  current line = [0-9]+( mpirank [0-9]+ \/ [0-9]+)?$/ || line ~ /^ call .* at  line [0-9]+$/ \
+      || line ~ /^exit\([0-9]+\)$/ || line ~ /^ err code [0-9]+ ,  mpirank [0-9]+$/
+  }
+  { if (trailer($0)) { held[++n] = $0; next }
+    for (i = 1; i <= n; i++) print held[i]
+    n = 0
+    print
+    fflush() }
+  END { clean = 0
+    for (i = 1; i <= n; i++) if (held[i] ~ /^ err code [01] ,/) clean = 1
+    if (!clean) for (i = 1; i <= n; i++) print held[i] }'
