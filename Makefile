@@ -265,6 +265,9 @@ run: check-scene plugin meshes
 
 # A checkout copied or moved elsewhere keeps a build/CMakeCache.txt naming the old folder, which
 # cmake refuses: such a build/ is another checkout's and is rebuilt from scratch.
+# (the plugin and the unit tests one after the other: both at once, four 2 GB compiles on 2 cores,
+# took 240 s of wall and 455 s of processor time from a fresh clone, against 79 + 108 = 187 s and
+# 355 s, measured on this machine idle)
 test: plugin meshes
 	@if [ -f build/CMakeCache.txt ] && ! grep -qxF "CMAKE_HOME_DIRECTORY:INTERNAL=$$(pwd -P)" build/CMakeCache.txt; then \
 	  echo "build/ was configured for another folder ($$(sed -n 's/^CMAKE_HOME_DIRECTORY:INTERNAL=//p' build/CMakeCache.txt)): rebuilding it"; \
