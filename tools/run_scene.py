@@ -5,7 +5,7 @@ Usage (the Makefile's):
   tools/run_scene.py [--env-args VAR] [--env-out VAR] [--mpi NP --seeds N] SCRIPT DEFAULT_OUT [PLOT COMMAND ...]
     --env-args VAR  the user's ARGS, read from the environment variable VAR (make run: RUN_ARGS)
     --env-out VAR   an output folder the user gave (make run's and make ensemble's OUT), read from VAR: one word
-    --mpi NP        run on NP MPI ranks (mpiexec --oversubscribe -np NP FreeFem++-mpi -nw -ne)
+    --mpi NP        run on NP MPI ranks (mpiexec --quiet --oversubscribe -np NP FreeFem++-mpi -nw -ne)
                     instead of tools/ff
     --seeds N       put -v 0 -seeds N before the user's words (make ensemble)
     --ranks NP      run a distributed scene (edp/mpi/*.edp) on NP ranks through tools/ff-mpi
@@ -110,8 +110,9 @@ def main(argv):
     launcher = [os.path.join(ROOT, "tools", "ff")]
     fixed = []
     if opts["mpi"] is not None:
-        launcher = ["mpiexec", "--oversubscribe", "-np", whole_number(opts["mpi"], "NP", 9999), "FreeFem++-mpi",
-                    "-nw", "-ne"]
+        # (--quiet: no banner of mpiexec's after a rank's own error line, as tools/ff-mpi)
+        launcher = ["mpiexec", "--quiet", "--oversubscribe", "-np", whole_number(opts["mpi"], "NP", 9999),
+                    "FreeFem++-mpi", "-nw", "-ne"]
     if opts["ranks"] is not None:
         # (at most the cores times 8: more ranks than that only wait for each other)
         launcher = [os.path.join(ROOT, "tools", "ff-mpi"),
