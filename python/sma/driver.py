@@ -234,11 +234,13 @@ def run(scene, out, quiet=True, notes=True, ranks=None, **values):
     printed to stderr (notes=True), passed to `notes` when it is a function of the line, or
     dropped (False). Raises SceneError naming the scene and its options, with the run's error line
     and the last lines of its log."""
-    if quiet and "quiet" in options(scene, ranks) and "quiet" not in values:
-        values["quiet"] = 1
-    path = folder(out)
-    words = command(scene, path, ranks, **values)
-    result = children.run(words, cwd=ROOT, capture_output=True, text=True)
+    # (a TERM or HUP from the options' reading on is said and passed on, as in sweep)
+    with children.terminable():
+        if quiet and "quiet" in options(scene, ranks) and "quiet" not in values:
+            values["quiet"] = 1
+        path = folder(out)
+        words = command(scene, path, ranks, **values)
+        result = children.run(words, cwd=ROOT, capture_output=True, text=True)
     if result.returncode != 0:
         log = (result.stdout + "\n" + result.stderr).strip().splitlines()
         errors = [ln for ln in log if ln.startswith("error:")]
