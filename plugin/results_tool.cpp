@@ -1,9 +1,11 @@
 // sma-results: the results folder's claim and manifest (plugin/core/files.hpp) for the suite's
 // Python tools, so that a sweep takes its folder and a plot tool lists its figures by the same
-// rules as a scene (one implementation: the manifest, the lock, the removal of what an earlier run
-// listed). Paths are arguments, never shell text.
+// rules as a scene (one implementation: the manifest, the lock, what an earlier run listed kept
+// in previous-run/ or removed). Paths are arguments, never shell text.
 //   sma-results claim DIR SCENE PID    refuse DIR or lock it for PID, clear what its manifest lists
-//   sma-results release DIR PID        remove PID's lock of DIR
+//   sma-results complete DIR PID       PID's run of DIR is complete: remove DIR/previous-run
+//   sma-results release DIR PID        remove PID's lock of DIR (and say so if the run did not
+//                                      complete and previous-run/ keeps the last complete run)
 //   sma-results record PATH            list PATH in the manifest of the results folder above it
 // Exit 0 on success; else 1 and one line "error: <reason naming the path>" on stderr; 2 on a bad
 // command line.
@@ -32,10 +34,18 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "error: %s\n", error.c_str());
     return 1;
   }
+  if (verb == "complete" && argc == 4 && pid_ok) {
+    const std::string error = sma::files::complete_results(argv[2], pid);
+    if (error.empty()) return 0;
+    std::fprintf(stderr, "error: %s\n", error.c_str());
+    return 1;
+  }
   if (verb == "release" && argc == 4 && pid_ok) {
+    const std::string note = sma::files::incomplete_run_note(argv[2], pid);
+    if (!note.empty()) std::fprintf(stderr, "%s\n", note.c_str());
     sma::files::release_results(argv[2], pid);
     return 0;
   }
-  std::fprintf(stderr, "usage: sma-results claim DIR SCENE PID | release DIR PID | record PATH\n");
+  std::fprintf(stderr, "usage: sma-results claim DIR SCENE PID | complete DIR PID | release DIR PID | record PATH\n");
   return 2;
 }

@@ -182,13 +182,14 @@ def main():
         prepare(tmp)
         env.update(T=tmp, R=ROOT)
         for row in rows:
-            # What a finished earlier run leaves: every check must come before it is deleted.
+            # What a finished earlier run leaves (its manifest, summary.json, the mark of a complete
+            # run): every check must come before the folder is taken (its run moved to previous-run/).
             out = os.path.join(tmp, "out")
             shutil.rmtree(out, ignore_errors=True)
             os.makedirs(out)
             earlier = '{"scene": "an earlier run"}\n'
             manifest = "sma-results manifest 1\nscene sleeve-circular\nsummary.json\n"
-            for name, text in ((".sma-results", manifest), ("summary.json", earlier)):
+            for name, text in ((".sma-results", manifest), ("summary.json", earlier), (".sma-complete", "")):
                 with open(os.path.join(out, name), "w") as f:
                     f.write(text)
             # The processor time of the row's processes, not the wall clock: the machine's load
@@ -205,7 +206,7 @@ def main():
             check(run.returncode == row["exit"] and len(errors) == 1 and matched and seconds < 20 and kept,
                   f"{row['input']}: exit {run.returncode} (table {row['exit']}), {len(errors)} error line, "
                   f"{'matches' if matched else 'does not match'} the pattern, {seconds:.2f} s of processor time, the earlier "
-                  f"summary.json {'kept' if kept else 'DELETED or changed'}: "
+                  f"summary.json {'kept' if kept else 'MOVED, DELETED or changed'}: "
                   f"{errors[0] if errors else run.stderr.strip()[-300:]}")
             measured.append({"input": row["input"], "exit": run.returncode, "cpu_seconds": round(seconds, 3),
                              "message": errors[0] if errors else None, "matched": matched})

@@ -23,10 +23,11 @@ Each run is classified:
   error-vague   exit 1 with an `error:` line that does not name the option
   accepted      exit 0: legitimate, or silently ignored/clamped (read the list: a defect if ignored)
   exec-error    exit 8 (FreeFEM Exec error): a defect unless the message names the option
-  late          a failure (exit 1 or 8) after the run had deleted an earlier run's results: before
-                each run the -out folder holds what a finished run leaves (a manifest listing a
-                summary.json, and that file), as in tests/bad_inputs_test.py; a bad option must be
-                refused before it is touched
+  late          a failure (exit 1 or 8) after the run had taken the folder (an earlier complete
+                run's results moved to previous-run/): before each run the -out folder holds what a
+                finished run leaves (a manifest listing a summary.json, that file and the mark
+                .sma-complete), as in tests/bad_inputs_test.py; a bad option must be refused before
+                the folder is taken
   timeout       no end within --timeout s: a defect if nothing bounds what the value asks for
   crash         any other exit code
 Writes a TSV (script, option, value, exit, class, message) and prints the counts per class.
@@ -79,11 +80,12 @@ EARLIER = '{"scene": "an earlier run"}\n'
 
 
 def plant_earlier_run(out):
-    """What a finished earlier run leaves in `out`: its manifest and the summary.json it lists."""
+    """What a finished earlier run leaves in `out`: its manifest, the summary.json it lists and the mark
+    of a complete run."""
     shutil.rmtree(out, ignore_errors=True)
     os.makedirs(out)
     manifest = "sma-results manifest 1\nscene sleeve-circular\nsummary.json\n"
-    for name, text in ((".sma-results", manifest), ("summary.json", EARLIER)):
+    for name, text in ((".sma-results", manifest), ("summary.json", EARLIER), (".sma-complete", "")):
         with open(os.path.join(out, name), "w") as f:
             f.write(text)
 

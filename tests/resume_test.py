@@ -11,7 +11,8 @@ step 120 holds a moved mesh and the resumed run moves it again):
     same run without -checkpoint (writing checkpoints changes nothing) and it leaves no
     checkpoint.txt behind (a finished run has nothing to resume);
   - B: the same run stopped after step 130 by -stopafter 130 (exit 4, as a crash: nothing
-    published, history.csv.partial holding the 30 rows past the checkpoint of step 100), with a
+    published, history.csv.partial holding the 30 rows past the checkpoint of step 100), in the
+    folder of the plain run, which stays whole in previous-run/ until B completes, with a
     half-written checkpoint.txt.partial added as a kill during a checkpoint's write leaves it;
     then resumed with -resume 1 (exit 0);
   - every file of B (CSVs, fields, VTU frames, fields.pvd) equals A's byte for byte, and B's
@@ -81,7 +82,7 @@ def main():
             name = os.path.basename(scene) + ("" if case == 0 or scene != CASES[0][0] else f"-{case}")
             label = f"{scene} {' '.join(options)}".strip()
             at = stop - stop % every  # the checkpoint the resumed run starts from
-            plain, full, stopped = (os.path.join(tmp, f"{name}-{k}") for k in ("plain", "A", "B"))
+            plain, full = (os.path.join(tmp, f"{name}-{k}") for k in ("plain", "A"))
             r0 = run(scene, plain, *options)
             ra = run(scene, full, *options, "-checkpoint", str(every))
             check(r0.returncode == 0 and ra.returncode == 0,
@@ -98,7 +99,17 @@ def main():
                   f"(differ: {differ}; summary {'equal' if sa == s0 else 'DIFFERS'}) and the finished run "
                   "leaves no checkpoint.txt")
 
+            # B runs in the plain run's folder: that complete run is kept whole in previous-run/
+            # while B has not completed, and said so at B's exit; B's completion removes it.
+            stopped = plain
+            with open(os.path.join(plain, "summary.json"), "rb") as f:
+                complete_summary = f.read()
             rb = run(scene, stopped, *options, "-checkpoint", str(every), "-stopafter", str(stop))
+            kept = os.path.join(stopped, "previous-run", "summary.json")
+            check(os.path.isfile(kept) and open(kept, "rb").read() == complete_summary
+                  and f"are kept whole in {stopped}/previous-run" in rb.stderr,
+                  f"{label}: the stopped run leaves the folder's complete run whole in previous-run/ "
+                  f"({'kept' if os.path.isfile(kept) else 'MISSING'}) and says so at its exit")
             checkpoint = os.path.join(stopped, "checkpoint.txt")
             text = open(checkpoint).read() if os.path.exists(checkpoint) else ""
             rows = sum(1 for _ in open(os.path.join(stopped, "history.csv.partial"))) - 1 \
@@ -120,6 +131,8 @@ def main():
             rr = run(scene, stopped, *options, "-checkpoint", str(every), "-resume", "1")
             check(rr.returncode == 0, f"{label}: -resume 1 finishes (exit {rr.returncode})"
                   + ("" if rr.returncode == 0 else " " + (rr.stdout + rr.stderr)[-400:]))
+            check(not os.path.exists(os.path.join(stopped, "previous-run")),
+                  f"{label}: the resumed run's completion removes previous-run/")
             differ, count = same_files(full, stopped)
             sb = json.load(open(os.path.join(stopped, "summary.json")))
             resumed_from = sb.get("resumed_from_step")
@@ -137,7 +150,7 @@ def main():
                 temperatures[label] = [words[column] for words in lines[1:]]
             measured.append({"scene": label, "checkpoint_every": every, "stopped_after": stop, "files": count, "differ": differ, "summary_equal": sa == sb,
                              "resumed_from_step": resumed_from, "rows_at_stop": rows})
-            for folder in (plain, full, stopped):
+            for folder in (plain, full):
                 shutil.rmtree(folder, ignore_errors=True)
     # The hook acted: its air temperature, swinging with sleeveTime, moved the inner temperature
     # away from sleeve-circular's on the same mesh (a hook that saw sleeveTime = 0 would not).

@@ -28,7 +28,7 @@ On sleeve-radial (300 steps, about 0.5 s a run), -g swept over 250, 500, 1000 th
       option among ARGS each fail (non-zero exit) naming it, before any run;
   (e) ARGS holding `; touch <file>` and VALUES holding `$(touch <file>)` run nothing;
   a value whose run fails (g = -1) leaves the others done, exits 1, and sweep.json holds its error
-  and the end of its log; negative values (-5e-6) are values, not flags; a value given twice is
+  and the end of its log, the folder's earlier complete sweep kept whole in previous-run/; negative values (-5e-6) are values, not flags; a value given twice is
   refused;
   (f) two parameters through make sweep (PARAM=interference VALUES='2e-4 5e-4' PARAM2=g
   VALUES2='250 1000', -steps 60): one folder per combination, table.csv's rows in the grid's order
@@ -249,8 +249,12 @@ def main():
               and "sleeve-radial: -g -1 must be in [0, 1e15]" in refused.stderr and not os.path.exists(refused_out),
               f"a value the scene refuses (g = -1) stops the sweep before any run, its folder not made: "
               f"exit {refused.returncode}, {first_error(refused)[:150]}")
-        # A run that fails in its time loop: the others still run; the sweep exits 1 naming it.
-        partial_out = os.path.join(tmp, "partial")
+        # A run that fails in its time loop: the others still run; the sweep exits 1 naming it. It
+        # runs in the folder of the -checkpoint sweep above, a complete sweep: kept whole in
+        # previous-run/, since this one does not complete.
+        partial_out = same_out
+        with open(os.path.join(same_out, "sweep.json"), "rb") as f:
+            complete_record = f.read()
         partial = sweep_tool("sleeve-radial", "stepmaxit", "50", "1", "--out", partial_out, "--", "-steps", "30",
                              "-stepfallback", "0")
         partial_runs = json.load(open(os.path.join(partial_out, "sweep.json")))["runs"]
@@ -261,6 +265,12 @@ def main():
               and "for -stepmaxit 1 failed" in partial.stderr,
               f"a run that fails (stepmaxit = 1, no fallback) leaves the others; exit {partial.returncode}, "
               f"sweep.json has its error line and log: {partial_runs[1].get('error', '').splitlines()[0][:110]}")
+        kept = os.path.join(partial_out, "previous-run", "sweep.json")
+        check(os.path.isfile(kept) and open(kept, "rb").read() == complete_record
+              and os.path.isfile(os.path.join(partial_out, "previous-run", "checkpoint=100", "summary.json"))
+              and f"are kept whole in {partial_out}/previous-run" in partial.stderr,
+              "the sweep that did not complete leaves the folder's complete sweep whole in previous-run/ "
+              "(its sweep.json and runs) and says so")
 
         parsed = sweep.parse(["sleeve-offset", "offset", "-5e-6", "0", "5e-6", "--jobs", "1"])
         twice = sweep_tool("sleeve-radial", "g", "500", "500")

@@ -183,7 +183,12 @@ def main(argv):
     try:
         status, _, _ = engine.run_grid(out, scene, params, grid, fixed, args["jobs"],
                                        record={"args": args["extra"], "options": fixed})
+        if status == 0:  # every run ended well: the earlier sweep, kept in previous-run/, goes
+            results_io.complete(out)
         return status
+    except results_io.ResultsError as e:  # the mark of completion could not be written
+        print(f"error: {e}", file=sys.stderr)
+        return 1
     except OSError as e:  # a full disk, a file-size limit: the table or a figure could not be written
         where = f" {e.filename}" if e.filename else ""
         print(f"error: the sweep's runs finished, but writing its results failed: cannot write{where}: "

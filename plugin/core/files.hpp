@@ -40,6 +40,15 @@ namespace fs = std::filesystem;
 inline const char* results_marker = ".sma-results";
 inline const char* manifest_header = "sma-results manifest 1";
 inline const char* results_lock = ".sma-lock";
+// A run's results replace the earlier run's only when it completes (publishes its record): a
+// fresh claim moves a complete run's entries into previous-run/ (a results folder of its own, with
+// the earlier manifest), and the run's completion (complete_results) removes it. A run that fails
+// or is stopped therefore leaves its own partial files beside the last complete run's, whole
+// (a re-run stopped by ^C, or refused late by its own physics, removed an hour's results).
+// The mark of a complete run, and the staging name of a claim moving a run aside (+ its pid).
+inline const char* results_complete = ".sma-complete";
+inline const char* previous_run = "previous-run";
+inline const char* previous_staging = ".sma-previous-";
 
 inline std::string reason(const std::error_code& ec) { return ec.message(); }
 
@@ -213,8 +222,17 @@ inline bool with_pid(const std::string& name, const std::string& prefix) {
 // Whether `name` is the manifest, the lock, or one of their temporary names (the suite's own files;
 // anything else of a similar name is a user's, and makes the folder refused like any other).
 inline bool bookkeeping(const std::string& name) {
-  return name == results_marker || name == results_lock || with_pid(name, std::string(results_lock) + ".stale-") ||
-         with_pid(name, std::string(results_marker) + ".partial-");
+  return name == results_marker || name == results_lock || name == results_complete ||
+         with_pid(name, std::string(results_lock) + ".stale-") ||
+         with_pid(name, std::string(results_marker) + ".partial-") || with_pid(name, previous_staging);
+}
+
+// Whether `dir` holds the suite's previous-run/: a folder (not a link) with a manifest. A user's
+// folder of that name has none, and is refused as any unlisted entry.
+inline bool holds_previous_run(const fs::path& dir) {
+  std::error_code ec;
+  const fs::path kept = dir / previous_run;
+  return fs::is_directory(fs::symlink_status(kept, ec)) && fs::exists(fs::symlink_status(kept / results_marker, ec));
 }
 
 // Whether the file `rel` is listed, or is a listed file's unfinished copy (x.csv.partial,
@@ -276,6 +294,10 @@ inline std::string unlisted_in(const fs::path& root, const Manifest& m, const st
   for (fs::directory_iterator it(here, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string name = it->path().filename().string();
     if (prefix.empty() && bookkeeping(name)) continue;
+    if (prefix.empty() && name == previous_run && holds_previous_run(root)) {
+      if (auto e = foreign_entry(it->path(), depth + 1); !e.empty()) return e;
+      continue;
+    }
     const std::string rel = prefix + name;
     const auto type = it->symlink_status(ec).type();
     // The suite writes no link: one here would make a write or a cut land outside the folder.
@@ -514,6 +536,54 @@ inline bool owns_nested_runs(const std::string& scene) {
          (scene.size() > ensemble.size() && scene.compare(scene.size() - ensemble.size(), ensemble.size(), ensemble) == 0);
 }
 
+// A fresh claim's treatment of the earlier run's entries `doomed` (under the lock): a complete
+// run's (its mark present) go into previous-run/ with a copy of its manifest, replacing an older
+// previous-run/; an incomplete run's are removed, and previous-run/, the last complete run's,
+// stays. The move goes through a staging folder of this process's: a claim killed while moving
+// leaves one, which the next claim takes over and completes (the earlier run's mark is removed
+// only after the move, so the next claim still sees a complete run).
+inline std::string set_aside_earlier_run(const fs::path& d, long pid, const std::vector<fs::path>& doomed) {
+  std::error_code ec;
+  const fs::path staging = d / (std::string(previous_staging) + std::to_string(pid));
+  std::vector<fs::path> stale;
+  for (fs::directory_iterator it(d, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (with_pid(name, previous_staging) && it->path() != staging &&
+        !process_alive(std::atol(name.c_str() + std::strlen(previous_staging))))
+      stale.push_back(it->path());
+  }
+  if (ec) return "cannot list " + d.string() + ": " + reason(ec);
+  bool adopted = false;
+  for (const auto& path : stale) {
+    if (adopted || fs::exists(staging, ec)) {  // (two killed claims: the first one's is kept)
+      fs::remove_all(path, ec);
+    } else {
+      fs::rename(path, staging, ec);
+      adopted = !ec;
+    }
+    if (ec) return "cannot take over " + path.string() + " (a killed run's earlier results): " + reason(ec);
+  }
+  const bool complete = adopted || fs::exists(d / results_complete, ec);
+  if (!complete) return remove_entries(doomed);
+  if (doomed.empty() && !adopted) return {};  // nothing to keep: an older previous-run/ stays
+  if (!fs::exists(staging, ec)) {
+    fs::create_directory(staging, ec);
+    if (ec) return "cannot create " + staging.string() + ": " + reason(ec);
+  }
+  if (!fs::exists(staging / results_marker, ec)) {
+    fs::copy_file(d / results_marker, staging / results_marker, ec);
+    if (ec) return "cannot copy the manifest into " + staging.string() + ": " + reason(ec);
+  }
+  for (const auto& path : doomed) {
+    fs::rename(path, staging / path.filename(), ec);
+    if (ec) return "cannot move " + path.string() + " into " + staging.string() + ": " + reason(ec);
+  }
+  fs::remove_all(d / previous_run, ec);
+  if (!ec) fs::rename(staging, d / previous_run, ec);
+  if (ec) return "cannot keep the earlier run in " + (d / previous_run).string() + ": " + reason(ec);
+  return {};
+}
+
 // The part of claim_results done under the folder's lock.
 inline std::string claim_locked(const fs::path& d, const std::string& dir, const std::string& scene, long pid,
                                 bool resume, const std::string& patterns) {
@@ -532,7 +602,7 @@ inline std::string claim_locked(const fs::path& d, const std::string& dir, const
   } else {
     for (fs::directory_iterator it(d, ec), end; !ec && it != end; it.increment(ec)) {
       const std::string name = it->path().filename().string();
-      if (bookkeeping(name)) continue;
+      if (bookkeeping(name) || (name == previous_run && holds_previous_run(d))) continue;
       std::error_code nested;
       if (!owns_nested_runs(scene) && fs::is_directory(fs::symlink_status(it->path(), nested)) &&
           fs::exists(it->path() / results_marker, nested))
@@ -544,7 +614,10 @@ inline std::string claim_locked(const fs::path& d, const std::string& dir, const
   }
   for (const auto& path : doomed)
     if (auto e = busy_inside(path, pid); !e.empty()) return e;
-  if (auto e = remove_entries(doomed); !e.empty()) return e;
+  if (auto e = resume ? remove_entries(doomed) : set_aside_earlier_run(d, pid, doomed); !e.empty()) return e;
+  // The folder is being written again: not complete until this run says so.
+  fs::remove(d / results_complete, ec);
+  if (ec) return "cannot remove " + (d / results_complete).string() + ": " + reason(ec);
   // The suite's own temporaries that a killed run left (its unfinished manifest, the stale lock it
   // was moving aside), fresh or resumed alike: their process no longer runs.
   for (const std::string& prefix : {std::string(results_marker) + ".partial-", std::string(results_lock) + ".stale-"})
@@ -561,6 +634,43 @@ inline std::string claim_locked(const fs::path& d, const std::string& dir, const
       if (auto e = append_manifest(d, run); !e.empty()) return e;
   }
   return {};
+}
+
+// Marks the run of `pid` in `dir` complete (it published its record): the mark is written, then
+// the earlier complete run kept in previous-run/ is removed. "" or the reason.
+inline std::string complete_results(const std::string& dir, long pid) {
+  const fs::path d(dir);
+  if (lock_owner(d / results_lock) != pid)
+    return "cannot mark the run in " + dir + " complete: this process does not hold the folder";
+  const fs::path mark = d / results_complete;
+  const int fd = open(mark.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (fd < 0) return "cannot write " + mark.string() + ": " + std::strerror(errno);
+  close(fd);
+  std::error_code ec;
+  if (holds_previous_run(d)) fs::remove_all(d / previous_run, ec);
+  if (ec) return "cannot remove the earlier run " + (d / previous_run).string() + ": " + reason(ec);
+  return {};
+}
+
+// Whether `path` is the record (summary.json) of the results folder `dir`: publishing it
+// completes the run (complete_results).
+inline bool is_record_of(const std::string& path, const std::string& dir) {
+  std::error_code ec;
+  const fs::path file = fs::absolute(path, ec).lexically_normal();
+  fs::path folder = fs::absolute(dir, ec).lexically_normal();
+  if (folder.filename().empty()) folder = folder.parent_path();  // "out/"
+  return !ec && file.filename() == "summary.json" && file.parent_path() == folder;
+}
+
+// The line a run that did not complete leaves at its exit when previous-run/ keeps the earlier
+// complete run ("" otherwise: the run completed, or there was none to keep).
+inline std::string incomplete_run_note(const std::string& dir, long pid) {
+  std::error_code ec;
+  const fs::path d(dir);
+  if (lock_owner(d / results_lock) != pid || fs::exists(d / results_complete, ec) || !holds_previous_run(d))
+    return {};
+  return "note: this run did not complete: " + dir + " holds its partial results, and the last complete run's "
+         "are kept whole in " + (d / previous_run).string() + " (removed when a run of the folder completes)";
 }
 
 // Removes the lock of `dir` if `pid` holds it.

@@ -96,13 +96,16 @@
 //       whole decimal words, finite; integers when integer != 0); "" or the bad value named
 //   string ResultsClaim(string dir, string scene)  refuse a folder holding anything its manifest
 //                                                  does not list, lock it for this run (the lock
-//                                                  goes when the process exits), remove the
-//                                                  listed entries, start a manifest
+//                                                  goes when the process exits), move a complete
+//                                                  run's listed entries into previous-run/ (else
+//                                                  remove them), start a manifest
 //   string ResultsClaimResumed(string dir, string scene, string patterns)   the same for a
 //                                                  resumed run: removes only the listed entries
 //                                                  that match the patterns
 //   string ResultsRecord(string path)              lists path in the manifest of its results folder
 //   int ResultsRelease(string dir)                 removes this process's lock of dir now
+//   string ResultsPublished(string path)           path published: a claimed folder's summary.json
+//                                                  completes its run (previous-run/ removed)
 //   string StreamWriteError(ofstream f)            flushes f; "" if every write so far succeeded
 //   string JsonFileError(string path)              "" if the file is valid JSON, finite numbers
 //   string JsonQuote(string s), string ShellQuote(string s)
@@ -173,7 +176,7 @@
 // the file that the launchers read before FreeFEM starts (tools/launcher-common.sh): FreeFEM
 // compiles a whole script before running any of it, so a plugin that lacks a function the scene
 // calls stops at compilation ("The Identifier ... does not exist") before plugin.idp's check runs.
-#define SMA_PLUGIN_VERSION 21
+#define SMA_PLUGIN_VERSION 22
 #define SMA_STRINGIFY(x) #x
 #define SMA_VERSION_STAMP(v) "sma-plugin-version " SMA_STRINGIFY(v) ";"
 extern "C" __attribute__((used, visibility("default")))

@@ -63,7 +63,11 @@ std::vector<std::string>& ClaimedFolders() {
   return folders;
 }
 void ReleaseClaimedFolders() {
-  for (const auto& dir : ClaimedFolders()) sma::files::release_results(dir, (long)getpid());
+  for (const auto& dir : ClaimedFolders()) {
+    const std::string note = sma::files::incomplete_run_note(dir, (long)getpid());
+    if (!note.empty()) std::fprintf(stderr, "%s\n", note.c_str());
+    sma::files::release_results(dir, (long)getpid());
+  }
 }
 // The entries this process has recorded in a manifest (files.hpp record_result).
 sma::files::RecordedResults& RecordedResults() {
@@ -87,6 +91,13 @@ string* ResultsClaimResumed(Stack stack, string* const& dir, string* const& scen
 }
 string* ResultsRecord(Stack stack, string* const& path) {
   return NewString(stack, sma::files::record_result(*path, RecordedResults()));
+}
+
+// Called on every published file: the folder's record (summary.json) completes its run.
+string* ResultsPublished(Stack stack, string* const& path) {
+  for (const auto& dir : ClaimedFolders())
+    if (sma::files::is_record_of(*path, dir)) return NewString(stack, sma::files::complete_results(dir, (long)getpid()));
+  return NewString(stack, "");
 }
 
 long ResultsRelease(string* const& dir) {
@@ -306,6 +317,7 @@ void AddOutputFunctions() {
   Global.Add("ResultsClaimResumed", "(", new OneOperator3s_<S, S, S, S>(ResultsClaimResumed));
   Global.Add("ResultsRecord", "(", new OneOperator1s_<S, S>(ResultsRecord));
   Global.Add("ResultsRelease", "(", new OneOperator1_<long, S>(ResultsRelease));
+  Global.Add("ResultsPublished", "(", new OneOperator1s_<S, S>(ResultsPublished));
   Global.Add("StreamWriteError", "(", new OneOperator1s_<S, std::ostream*>(StreamWriteError));
   Global.Add("JsonFileError", "(", new OneOperator1s_<S, S>(JsonFileError));
   Global.Add("VtuWrite", "(", new OneOperator8_<long, S, pmesh, S, A, S, A, S, KNM<double>*>(VtuWrite));

@@ -41,14 +41,24 @@ def record(path):
 def claim(folder, scene):
     """Takes `folder` for this process's writing, as a scene takes its -out: refused (ResultsError,
     nothing touched) when it holds anything its manifest does not list or another run holds it;
-    else what an earlier run listed there is removed and a manifest of `scene` started. The lock
+    else what an earlier run listed there goes (a complete run's into previous-run/, until this one
+    calls complete()) and a manifest of `scene` started. The lock
     goes with release(folder) or this process's end (a later run finds it stale)."""
     results_tool("claim", folder, scene, str(os.getpid()))
 
 
+def complete(folder):
+    """This process's run of `folder` (taken by claim) is complete: the earlier complete run, kept
+    in its previous-run/ since the claim, is removed."""
+    results_tool("complete", folder, str(os.getpid()))
+
+
 def release(folder):
-    """Removes this process's lock of `folder` (taken by claim)."""
-    subprocess.run([RESULTS_TOOL, "release", folder, str(os.getpid())], capture_output=True)
+    """Removes this process's lock of `folder` (taken by claim); a run that did not complete is told
+    on stderr where the last complete run is kept (previous-run/)."""
+    done = subprocess.run([RESULTS_TOOL, "release", folder, str(os.getpid())], capture_output=True, text=True)
+    if done.stderr.startswith("note: "):
+        print(done.stderr.strip(), file=sys.stderr)
 
 
 class ResultsError(Exception):

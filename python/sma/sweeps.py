@@ -892,6 +892,10 @@ def sweep(scene, grid, fixed=None, jobs=2, out=None):
                                             record={"args": [w for k, v in fixed.items() for w in (f"-{k}", text_of(v))],
                                                     "options": {k: text_of(v) for k, v in fixed.items()}},
                                             say=lambda *a, **k: None, warn=lambda line: None)
+            if status == 0:
+                results_io.complete(out)
+        except results_io.ResultsError as e:
+            raise SceneError(str(e)) from None
         finally:
             results_io.release(out)
         table = read_sweep(out)

@@ -274,6 +274,90 @@ TEST(Files, ALiveRunsLockIsRespectedADeadRunsIsTaken) {
   EXPECT_FALSE(fs::exists(lock_left));
 }
 
+// A run's results replace the earlier run's only when it completes: a fresh claim moves a complete
+// run into previous-run/, a run that does not complete leaves it there whole (and its own partial
+// files beside it), the next complete run removes it.
+TEST(Files, ARunThatDoesNotCompleteLeavesTheLastCompleteRunWhole) {
+  Scratch t;
+  const std::string d = t / "out";
+  const long pid = getpid();
+  auto write = [&](const std::string& name, const std::string& text) {
+    files::RecordedResults known;
+    ASSERT_EQ(files::record_result(d + "/" + name, known), "");
+    touch(d + "/" + name, text);
+  };
+  // Run 1 completes: its record published, the mark written.
+  ASSERT_EQ(files::claim_results(d, "sleeve-radial", pid), "");
+  fs::create_directories(d + "/frames");
+  write("frames/step-1.vtu", "frame 1");
+  write("summary.json", "run 1");
+  EXPECT_TRUE(files::is_record_of(d + "/summary.json", d));
+  EXPECT_TRUE(files::is_record_of(d + "/./summary.json", d + "/"));
+  EXPECT_FALSE(files::is_record_of(d + "/frames/summary.json", d));
+  EXPECT_FALSE(files::is_record_of(d + "/history.csv", d));
+  ASSERT_EQ(files::complete_results(d, pid), "");
+  EXPECT_EQ(files::incomplete_run_note(d, pid), "");
+  files::release_results(d, pid);
+  // Another process cannot mark a folder it does not hold.
+  EXPECT_NE(files::complete_results(d, pid), "");
+  // Run 2 (another scene) is stopped before its record: run 1 is whole in previous-run/.
+  ASSERT_EQ(files::claim_results(d, "sleeve-circular", pid), "");
+  EXPECT_FALSE(fs::exists(d + "/summary.json"));
+  EXPECT_FALSE(fs::exists(d + "/" + files::results_complete));
+  std::ifstream kept(d + "/previous-run/summary.json");
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(kept), {}), "run 1");
+  EXPECT_TRUE(fs::exists(d + "/previous-run/frames/step-1.vtu"));
+  files::Manifest previous;
+  ASSERT_EQ(files::read_manifest(d + "/previous-run", previous), "");
+  EXPECT_EQ(previous.scene, "sleeve-radial");
+  write("history.csv", "run 2, cut short");
+  const std::string note = files::incomplete_run_note(d, pid);
+  EXPECT_NE(note.find(d + "/previous-run"), std::string::npos) << note;
+  files::release_results(d, pid);
+  // Run 3 is stopped too: run 2's partial files go, run 1 stays kept (not replaced by run 2's).
+  ASSERT_EQ(files::claim_results(d, "sleeve-radial", pid), "");
+  EXPECT_FALSE(fs::exists(d + "/history.csv"));
+  EXPECT_TRUE(fs::exists(d + "/previous-run/summary.json"));
+  EXPECT_FALSE(fs::exists(d + "/previous-run/history.csv"));
+  files::release_results(d, pid);
+  // A user's file in previous-run/ is refused as any unlisted file, nothing touched.
+  touch(d + "/previous-run/notes.txt", "mine");
+  const std::string refused = files::claim_results(d, "sleeve-radial", pid);
+  EXPECT_NE(refused.find("notes.txt"), std::string::npos) << refused;
+  fs::remove(d + "/previous-run/notes.txt");
+  // Run 4 completes: previous-run/ goes.
+  ASSERT_EQ(files::claim_results(d, "sleeve-radial", pid), "");
+  write("summary.json", "run 4");
+  ASSERT_EQ(files::complete_results(d, pid), "");
+  EXPECT_FALSE(fs::exists(d + "/previous-run"));
+  files::release_results(d, pid);
+  // A claim killed while moving run 4 aside (its staging folder holds the manifest's copy and part
+  // of the entries): the next claim takes the move over, and run 4 is whole in previous-run/.
+  const pid_t child = fork();
+  if (child == 0) _exit(0);
+  waitpid(child, nullptr, 0);
+  const std::string staging = d + "/" + files::previous_staging + std::to_string(child);
+  fs::create_directories(staging);
+  fs::copy_file(d + "/" + files::results_marker, staging + "/" + files::results_marker);
+  fs::rename(d + "/summary.json", staging + "/summary.json");
+  fs::create_directories(d + "/frames");
+  write("frames/step-1.vtu", "frame 4");
+  ASSERT_EQ(files::claim_results(d, "sleeve-radial", pid), "");
+  EXPECT_FALSE(fs::exists(staging));
+  EXPECT_TRUE(fs::exists(d + "/previous-run/summary.json"));
+  EXPECT_TRUE(fs::exists(d + "/previous-run/frames/step-1.vtu"));
+  EXPECT_FALSE(fs::exists(d + "/frames"));
+  files::release_results(d, pid);
+  // A user's folder named previous-run (no manifest) is the user's: refused, untouched.
+  const std::string other = t / "other";
+  ASSERT_EQ(files::claim_results(other, "beam", pid), "");
+  files::release_results(other, pid);
+  fs::create_directories(other + "/previous-run");
+  touch(other + "/previous-run/mine.txt", "mine");
+  EXPECT_NE(files::claim_results(other, "beam", pid).find("previous-run/"), std::string::npos);
+  EXPECT_TRUE(fs::exists(other + "/previous-run/mine.txt"));
+}
+
 TEST(Files, EndsWithTellsACompleteVtuFromACutOne) {
   Scratch t;
   touch(t / "whole.vtu", "<VTKFile>\n</VTKFile>\n");
