@@ -20,6 +20,8 @@
 #   make python                                          only when asked: install the sma package (python/sma) for
 #                                                        the user, editable and offline: `import sma` from anywhere
 #   make help                                            this list, the scenes and variants, and where to start
+#   make clean                                           remove what the build made (build/, plugin/build/, the
+#                                                        meshes); results/ is kept
 SHELL := /bin/bash
 # A user's CDPATH sends a relative `cd` to a folder it names (tools/ff says more): never the recipes'.
 unexport CDPATH
@@ -375,5 +377,8 @@ docs: plugin
 	@$(PYTHON) tools/docs/param_reference.py
 	@$(PYTHON) tools/docs/python_api.py
 
+# What the build made, never results/: the runs' results are data (an hour's sleeve-3d, an
+# ensemble, a user's notes beside them), and `make clean` is typed to rebuild (it removed them all).
 clean:
-	rm -rf build plugin/build meshes/*.msh results
+	rm -rf build plugin/build meshes/*.msh
+	@[ ! -d results ] || echo "results/ kept: your runs' results (remove what you no longer need yourself)"

@@ -8,7 +8,9 @@
 - make run's OUT=dir names the results folder (it was ignored: the results went to
   results/<scene>@... without a word), alone and with ARGS;
 - a relative TMPDIR is made absolute by the launcher: the plugin's TemporaryDirectory (which follows
-  only an absolute TMPDIR) makes its folder there.
+  only an absolute TMPDIR) makes its folder there;
+- make clean (the Makefile run in a scratch copy) removes what the build made and keeps results/, a
+  run's folder and a user's file in it (it removed results/ whole).
 A TMPDIR that is not a directory is a bad input of docs/errors.md (tests/bad_inputs_test.py).
 Writes results/checks/environment.json.
 """
@@ -85,6 +87,22 @@ def main():
         inside = bool(folder) and folder[0].startswith(os.path.join(scratch, "tmp") + "/probe-")
         check(code == 0 and inside, f"TMPDIR={relative} (relative): the plugin's folder {folder} under "
               f"{os.path.join(scratch, 'tmp')}")
+
+        # make clean in a copy holding the build's products and results: only the former go.
+        copy = os.path.join(scratch, "clean")
+        for folder in ("build", "plugin/build", "meshes", "results/sleeve-radial"):
+            os.makedirs(os.path.join(copy, folder))
+        shutil.copy(os.path.join(ROOT, "Makefile"), copy)
+        shutil.copy(os.path.join(ROOT, "meshes", "sleeve-geometry.txt"), os.path.join(copy, "meshes"))
+        made = ["build/CMakeCache.txt", "plugin/build/sma.so", "meshes/sleeve.msh"]
+        kept = ["meshes/sleeve-geometry.txt", "results/sleeve-radial/summary.json", "results/notes.txt"]
+        for name in made + kept:
+            open(os.path.join(copy, name), "w").close()
+        code, out = run(["make", "--no-print-directory", "clean"], cwd=copy)
+        gone = [n for n in made if not os.path.exists(os.path.join(copy, n))]
+        still = [n for n in kept if os.path.exists(os.path.join(copy, n))]
+        check(code == 0 and gone == made and still == kept and "results/ kept" in out,
+              f"make clean: exit {code}, removed {gone} (the build's {made}), kept {still} (of {kept})")
         record("environment", {"test": "environment", "lure": lure, "relative_tmpdir": relative})
     finally:
         shutil.rmtree(scratch, ignore_errors=True)
