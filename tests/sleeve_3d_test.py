@@ -110,6 +110,16 @@ def main():
         check(1.6 <= order <= 2.4, f"{key}: 3D - axisymmetric {d[0] / 1e6:.4f}, {d[1] / 1e6:.4f} MPa at nr 2, 3: "
               f"order {order:.2f} in [1.6, 2.4]")
         check(abs(d[1]) <= 3e-3 * axi[key], f"{key}: {abs(d[1]) / axi[key]:.2e} of it at nr 3 <= 3e-3")
+    # the filtered nodal pressure: on the round pipe every node reads its ring's mean (the uniform
+    # pressure), where one node's reaction over its area spreads by a fifth around the ring
+    for nr, _ in meshes:
+        bore = rows(os.path.join(solid[nr]["out"], "bore-final.csv"))
+        spread = max(max(abs(float(r[k]) / float(r["pressure"]) - 1) for k in ("pressure_min", "pressure_max")) for r in bore)
+        raw = solid[nr]["summary"]["final_pressure_node_max"] / solid[nr]["summary"]["final_pressure_node_min"] - 1
+        figures[f"filtered_nodal_spread_nr{nr}"] = {"filtered": spread, "unfiltered_max_over_min": raw}
+        check(spread <= 1e-9 and raw >= 0.1,
+              f"sleeve-3d nr {nr}, round pipe: the filtered nodal pressures equal their ring's mean to {spread:.1e} "
+              f"(unfiltered, the nodes' max over min {1 + raw:.3f})")
     for key in ("T_inner_first_contact", "T_inner_austenite"):
         gap = abs(solid[3]["summary"][key] - axi[key])
         figures[key] = {"axisymmetric_nr8": axi[key], "solid_nr3": solid[3]["summary"][key]}
@@ -185,7 +195,13 @@ def main():
           f"quarter's {quarter / 1e6:.4f} MPa (within 1e-3)")
 
     # 6. bending with friction (mu 0.2, 0.01 rad in one increment) against the frictionless one
-    b1 = run("sleeve-3d", "bend-mu", "-mu", "0.2", "-bend", "1e-2", "-bendsteps", "1")["summary"]["bending"]
+    bent = run("sleeve-3d", "bend-mu", "-mu", "0.2", "-bend", "1e-2", "-bendsteps", "1")
+    b1 = bent["summary"]["bending"]
+    nodes = rows(os.path.join(bent["out"], "bore-5-bent.csv"))
+    open_nodes = [r for r in nodes if float(r["pressure"]) == 0]
+    check(open_nodes and all(float(r["pressure_filtered"]) == 0 for r in open_nodes)
+          and all(float(r["pressure_filtered"]) > 0 for r in nodes if float(r["pressure"]) > 0),
+          f"-mu 0.2 -bend 1e-2: the filtered pressure is 0 at the {len(open_nodes)} open nodes, > 0 at the pressing ones")
     f0 = run("sleeve-3d", "bend0-large", "-bend", "1e-2", "-bendsteps", "10")["summary"]["bending"]
     stage_invariants("-mu 0.2 -bend 1e-2", b1)
     stage_invariants("-bend 1e-2", f0)
