@@ -38,8 +38,8 @@ STUB_DIR = os.path.join(PLUGIN_DIR, "ffddm")
 def ffddm_environment():
     """FreeFEM's paths for FreeFem++-mpi: the stand-in MUMPS_mpi first (plugin/ffddm/MUMPS_mpi.cpp),
     the project's plugin (ffddm_contact_3d.edp's PsorCondensed), then Debian's MPI plugins and its
-    others; the tools' shared ring (ffddm_ring_3d.idp); OpenMPI's consent to run as root (a
-    container)."""
+    others; the tools' shared ring (ffddm_ring_3d.idp) and the scene's distributed solve
+    (edp/solvers/ddm-global-solve.idp); OpenMPI's consent to run as root (a container)."""
     for built in (os.path.join(STUB_DIR, "MUMPS_mpi.so"), os.path.join(PLUGIN_DIR, "sma.so")):
         if not os.path.exists(built):
             sys.exit(f"error: ffddm_scaling: {os.path.relpath(built, ROOT)} is not built: run make plugin")
@@ -48,7 +48,7 @@ def ffddm_environment():
             sys.exit(f"error: ffddm_scaling: {tool} not found (make deps installs openmpi and FreeFEM)")
     env = dict(os.environ)
     env["FF_LOADPATH"] = f"{STUB_DIR};{PLUGIN_DIR};/usr/lib/freefem++/mpi;/usr/lib/freefem++;./"
-    env["FF_INCLUDEPATH"] = f"/usr/include/freefem++/idp;{BENCH_DIR};./"
+    env["FF_INCLUDEPATH"] = f"/usr/include/freefem++/idp;{BENCH_DIR};{os.path.join(ROOT, 'edp', 'solvers')};./"
     env["OMPI_ALLOW_RUN_AS_ROOT"] = "1"
     env["OMPI_ALLOW_RUN_AS_ROOT_CONFIRM"] = "1"
     env["OMPI_MCA_mpi_yield_when_idle"] = "1"
