@@ -655,6 +655,7 @@ inline std::string complete_results(const std::string& dir, long pid) {
 // Whether `path` is the record (summary.json) of the results folder `dir`: publishing it
 // completes the run (complete_results).
 inline bool is_record_of(const std::string& path, const std::string& dir) {
+  if (fs::path(path).filename() != "summary.json") return false;  // (every published file asks: no paths made)
   std::error_code ec;
   const fs::path file = fs::absolute(path, ec).lexically_normal();
   fs::path folder = fs::absolute(dir, ec).lexically_normal();
