@@ -122,6 +122,21 @@ inline PsorResult condensed_global_step(const SpdFactor& k, const DelassusFactor
   return res;
 }
 
+// The cone's free motion from H S u_free (three rows per node): q_n = -(n.u_free + gap),
+// q_tc = -(tc.u_free - slip_reference[2i + c - 1]) for c = 1, 2, 0 where a support blocks the
+// component (its Delassus diagonal 0).
+inline Eigen::VectorXd cone_free_motion(const DelassusFactor& d, const Eigen::VectorXd& hu, span<const double> gap,
+                                        span<const double> slip_reference) {
+  const Eigen::Index m = (Eigen::Index)gap.size();
+  Eigen::VectorXd q(3 * m);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    q[3 * i] = -(hu[3 * i] + gap[i]);
+    for (int c = 1; c <= 2; ++c)
+      q[3 * i + c] = d.w(3 * i + c, 3 * i + c) != 0.0 ? -(hu[3 * i + c] - slip_reference[2 * i + c - 1]) : 0.0;
+  }
+  return q;
+}
+
 // The 3D contact step (psor_cone.hpp): three rows per node (n, t1, t2) in d, its Delassus operator
 // formed on all of them; per node i: gap[i], threshold[i] (the Tresca disk's radius),
 // slip_reference[2i], [2i + 1] (t1.u and t2.u at the stage's start). The free motion
@@ -140,13 +155,7 @@ inline PsorResult condensed_cone_step(const SpdFactor& k, const DelassusFactor& 
   if ((Eigen::Index)threshold.size() != m || (Eigen::Index)slip_reference.size() != 2 * m || r.size() != 3 * m)
     throw std::invalid_argument("per-node data of unequal lengths (threshold m, slip reference 2m, r 3m)");
   Eigen::VectorXd z = k.forward(rhs);
-  const Eigen::VectorXd hu = contact_motion(d, z);
-  Eigen::VectorXd q(3 * m);
-  for (Eigen::Index i = 0; i < m; ++i) {
-    q[3 * i] = -(hu[3 * i] + gap[i]);
-    for (int c = 1; c <= 2; ++c)
-      q[3 * i + c] = d.w(3 * i + c, 3 * i + c) != 0.0 ? -(hu[3 * i + c] - slip_reference[2 * i + c - 1]) : 0.0;
-  }
+  const Eigen::VectorXd q = cone_free_motion(d, contact_motion(d, z), gap, slip_reference);
   const Eigen::VectorXd g = Eigen::Map<const Eigen::VectorXd>(threshold.begin(), m);
   const PsorResult res = psor_cone(d.w, q, g, settings.omega, settings.tol, settings.maxit, r, settings.polish);
   add_contact_load(d, r, z);

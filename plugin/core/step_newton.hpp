@@ -100,6 +100,10 @@ struct StepProblem {
   // Contact, per node: gap, t.u at the step's start, 0 where a support blocks the tangential
   // motion, the Coulomb coefficient.
   Eigen::VectorXd gap, slip_reference, tangent_free, mu;
+  // The contact's rows per node: 2, (n, t) (the 2D layout: one tangential row, a Tresca interval),
+  // or 3, (n, t1, t2) (Coulomb's cone in 3D, psor_cone.hpp: the two tangential reactions bounded
+  // together); with 3, slip_reference holds (t1.u, t2.u) per node, interleaved, and r 3 per node.
+  int contact_rows = 2;
   ContactStepSettings psor;
   double slip_tol = 1e-9;
   int slip_maxit = 200;
@@ -231,6 +235,11 @@ struct StepState {
   mutable std::vector<double> slide;
   mutable Eigen::PartialPivLU<Eigen::MatrixXd> statuses;
   mutable bool frozen = false;
+  // The cone's (contact_rows 3): per moving unknown a, the node's three rows it tests (cone_test)
+  // and moves (cone_trial), 3 values each, and its compliance (cone_compliance: |w_t| / g for a
+  // sliding node's motion across its slip, 0 otherwise); slip[i] = |w_t| of node i at the solve.
+  mutable std::vector<double> cone_test, cone_trial, cone_compliance;
+  Eigen::VectorXd slip;
   double residual_norm = 0.0;
 };
 
@@ -874,9 +883,11 @@ class StepSolver {
     p_.law.validate();
     if (p_.contact) {
       const Eigen::Index m = p_.gap.size();
-      need(p_.contact->w.rows() == 2 * m && p_.contact->y.rows() == dofs, "contact problem of the step's sizes");
-      need(p_.slip_reference.size() == m && p_.tangent_free.size() == m && p_.mu.size() == m,
-           "per-contact-node data of one length");
+      const Eigen::Index rows = p_.contact_rows;
+      need(rows == 2 || rows == 3, "contact rows per node: 2 (n, t) or 3 (n, t1, t2: the cone)");
+      need(p_.contact->w.rows() == rows * m && p_.contact->y.rows() == dofs, "contact problem of the step's sizes");
+      need(p_.slip_reference.size() == (rows - 1) * m && p_.tangent_free.size() == m && p_.mu.size() == m,
+           "per-contact-node data of one length (the slip references: 2 per node on the cone)");
       need(p_.slip_tol >= 0 && p_.slip_maxit >= 1, "slip-threshold tolerance >= 0 and limit >= 1");
     }
   }
@@ -922,9 +933,11 @@ class StepSolver {
       return Memo::Remembered;
     }
     const DelassusFactor& d = *p_.contact;
-    const Eigen::VectorXd q = contact_free_motion(d, contact_motion(d, z), step_detail::as_span(p_.gap),
-                                                  step_detail::as_span(p_.slip_reference),
-                                                  step_detail::as_span(p_.tangent_free));
+    const Eigen::VectorXd q =
+        cone() ? cone_free_motion(d, contact_motion(d, z), step_detail::as_span(p_.gap),
+                                  step_detail::as_span(p_.slip_reference))
+               : contact_free_motion(d, contact_motion(d, z), step_detail::as_span(p_.gap),
+                                     step_detail::as_span(p_.slip_reference), step_detail::as_span(p_.tangent_free));
     bool kept = false;
     if (!friction()) {
       if (reusable) {
@@ -948,6 +961,7 @@ class StepSolver {
         throw std::runtime_error("slip-threshold fixed point (Coulomb) did not converge: " + std::to_string(it) +
                                  " iterations, relative change of g " + std::to_string(change) + " > tol " +
                                  std::to_string(p_.slip_tol));
+      if (cone()) cone_slip(q, s);
     }
     add_contact_load_sparse(d, s.r, z, work_.load);
     p_.stiffness->backward_in_place(z, span<double>(s.u.data(), (std::size_t)s.u.size()));
@@ -986,9 +1000,13 @@ class StepSolver {
     return p_.tangent_free[i] != 0 && p_.contact->w(2 * i + 1, 2 * i + 1) != 0.0;
   }
 
+  bool cone() const { return p_.contact_rows == 3; }
+
   int run_psor(const Eigen::VectorXd& q, StepState& s) {
-    const PsorResult res = psor_condensed(p_.contact->w, q, s.threshold, p_.psor.omega, p_.psor.tol, p_.psor.maxit,
-                                          s.r, p_.psor.polish);
+    const PsorResult res =
+        cone() ? psor_cone(p_.contact->w, q, s.threshold, p_.psor.omega, p_.psor.tol, p_.psor.maxit, s.r, p_.psor.polish)
+               : psor_condensed(p_.contact->w, q, s.threshold, p_.psor.omega, p_.psor.tol, p_.psor.maxit, s.r,
+                                p_.psor.polish);
     stats_.psor_sweeps += res.iterations;
     if (!res.converged)
       throw std::runtime_error("contact: PSOR (condensed) did not converge: " + std::to_string(res.iterations) +
@@ -1003,10 +1021,10 @@ class StepSolver {
   // g = mu r_n (0 where the tangential motion is blocked); the relative change, as contact.idp's
   // ContactUpdateThresholds.
   double update_thresholds(StepState& s) const {
-    const Eigen::Index m = p_.gap.size();
+    const Eigen::Index m = p_.gap.size(), rows = p_.contact_rows;
     double change = 0, size = 0;
     for (Eigen::Index i = 0; i < m; ++i) {
-      const double g = p_.mu[i] * std::max(0.0, s.r[2 * i]) * p_.tangent_free[i];
+      const double g = p_.mu[i] * std::max(0.0, s.r[rows * i]) * p_.tangent_free[i];
       change = std::max(change, std::fabs(g - s.threshold[i]));
       size = std::max(size, g);
       s.threshold[i] = g;
@@ -1020,6 +1038,7 @@ class StepSolver {
   void freeze_statuses(const StepState& s) const {
     if (s.frozen) return;
     s.frozen = true;
+    if (cone()) return freeze_cone_statuses(s);
     const Eigen::MatrixXd& W = p_.contact->w;
     const Eigen::Index m = p_.gap.size();
     s.moving.clear();
@@ -1063,6 +1082,11 @@ class StepSolver {
         column_of_row_.assign((std::size_t)d.w.rows(), -1);
         for (std::size_t j = 0; j < d.rows.size(); ++j) column_of_row_[(std::size_t)d.rows[j]] = (int)j;
       }
+      if (cone()) {
+        cone_linear(s, z);
+        p_.stiffness->backward_in_place(z, span<double>(du.data(), (std::size_t)du.size()));
+        return;
+      }
       Eigen::VectorXd& b = work_.moving_motion;
       b.resize(k);
       for (Eigen::Index a = 0; a < k; ++a)  // W dr = dq = -d(H u_free), on the moving rows only
@@ -1081,6 +1105,96 @@ class StepSolver {
       add_contact_load_sparse(d, dr, z, work_.load);
     }
     p_.stiffness->backward_in_place(z, span<double>(du.data(), (std::size_t)du.size()));
+  }
+
+  // |w_t| of each node at the cone's solve (w = W r - q): a sliding node's slip, whose size sets how
+  // far its direction turns under a change of the load (freeze_cone_statuses).
+  void cone_slip(const Eigen::VectorXd& q, StepState& s) const {
+    const Eigen::Index m = p_.gap.size();
+    const Eigen::VectorXd w = p_.contact->w * s.r - q;
+    s.slip.resize(m);
+    for (Eigen::Index i = 0; i < m; ++i) s.slip[i] = std::hypot(w[3 * i + 1], w[3 * i + 2]);
+  }
+
+  // freeze_statuses on the cone (contact_rows 3). Per pressing node (r_n > 0): its normal row; a
+  // sticking node's free tangential rows (|r_t| < g); a sliding node's tangential reaction follows
+  // its normal one along its direction e = r_t / |r_t| (r_t = g e, g = mu r_n: dr_t = mu dr_n e +
+  // g de). Where both tangential motions are free the direction turns with the slip w_t = -|w_t| e:
+  // g de = -(g / |w_t|) (I - e e') dw_t, so across it (e_perp = (-e_2, e_1)) the node keeps
+  // dw_perp + (|w_t| / g) dr_perp = 0, a stick of compliance |w_t| / g (the derivative of the
+  // disk's projection that psor_cone's polish takes). Each moving unknown a tests the rows of its
+  // node along cone_test and moves them along cone_trial.
+  void freeze_cone_statuses(const StepState& s) const {
+    const Eigen::MatrixXd& W = p_.contact->w;
+    const Eigen::Index m = p_.gap.size();
+    s.moving.clear();
+    s.cone_test.clear();
+    s.cone_trial.clear();
+    s.cone_compliance.clear();
+    auto add = [&s](Eigen::Index i, const double (&test)[3], const double (&trial)[3], double compliance) {
+      s.moving.push_back((int)(3 * i));
+      s.cone_test.insert(s.cone_test.end(), test, test + 3);
+      s.cone_trial.insert(s.cone_trial.end(), trial, trial + 3);
+      s.cone_compliance.push_back(compliance);
+    };
+    const double normal[3] = {1, 0, 0}, first[3] = {0, 1, 0}, second[3] = {0, 0, 1};
+    for (Eigen::Index i = 0; i < m; ++i) {
+      const Eigen::Index n = 3 * i;
+      if (!(s.r[n] > 0)) continue;
+      const double g = s.threshold[i], rt = std::hypot(s.r[n + 1], s.r[n + 2]);
+      const bool free1 = W(n + 1, n + 1) != 0.0, free2 = W(n + 2, n + 2) != 0.0;
+      if (!(g > 0) || (!free1 && !free2)) {
+        add(i, normal, normal, 0.0);
+      } else if (rt < g * (1 - 1e-9)) {
+        add(i, normal, normal, 0.0);
+        if (free1) add(i, first, first, 0.0);
+        if (free2) add(i, second, second, 0.0);
+      } else {
+        const double mu = p_.mu[i] * p_.tangent_free[i], e1 = s.r[n + 1] / rt, e2 = s.r[n + 2] / rt;
+        const double follows[3] = {1, mu * e1, mu * e2}, across[3] = {0, -e2, e1};
+        add(i, normal, follows, 0.0);
+        if (free1 && free2) add(i, across, across, s.slip.size() == m ? s.slip[i] / g : 0.0);
+      }
+    }
+    const Eigen::Index k = (Eigen::Index)s.moving.size();
+    if (k == 0) return;
+    Eigen::MatrixXd A(k, k);
+    for (Eigen::Index a = 0; a < k; ++a)
+      for (Eigen::Index b = 0; b < k; ++b) {
+        const Eigen::Index row = s.moving[(std::size_t)a], col = s.moving[(std::size_t)b];
+        const double* test = &s.cone_test[(std::size_t)(3 * a)];
+        const double* trial = &s.cone_trial[(std::size_t)(3 * b)];
+        double v = a == b ? s.cone_compliance[(std::size_t)a] : 0.0;
+        for (int c = 0; c < 3; ++c)
+          for (int e = 0; e < 3; ++e) v += test[c] * W(row + c, col + e) * trial[e];
+        A(a, b) = v;
+      }
+    s.statuses.compute(A);
+  }
+
+  // contact_linear's contact part on the cone: the moving unknowns' reactions for the forward
+  // half z of the load's change, added into z.
+  void cone_linear(const StepState& s, Eigen::VectorXd& z) {
+    const DelassusFactor& d = *p_.contact;
+    const Eigen::Index k = (Eigen::Index)s.moving.size();
+    Eigen::VectorXd& b = work_.moving_motion;
+    b.resize(k);
+    for (Eigen::Index a = 0; a < k; ++a) {  // W dr = dq = -d(H u_free), tested along cone_test
+      double v = 0.0;
+      for (int c = 0; c < 3; ++c) {
+        const double t = s.cone_test[(std::size_t)(3 * a + c)];
+        if (t != 0.0) v -= t * contact_motion_at(d, column_of_row_[(std::size_t)(s.moving[(std::size_t)a] + c)], z);
+      }
+      b[a] = v;
+    }
+    Eigen::VectorXd& x = work_.moving_reaction;
+    x.resize(k);
+    x = s.statuses.solve(b);
+    Eigen::VectorXd& dr = work_.dr;
+    dr.setZero(d.w.rows());
+    for (Eigen::Index a = 0; a < k; ++a)
+      for (int c = 0; c < 3; ++c) dr[s.moving[(std::size_t)a] + c] += s.cone_trial[(std::size_t)(3 * a + c)] * x[a];
+    add_contact_load_sparse(d, dr, z, work_.load);
   }
 
   // The force f = -dW/dbeta / area on point i of state s at fraction b, on the side of its held

@@ -73,11 +73,14 @@ Eigen::VectorXd Segment(KN<double>* a, long start, long length, const char* what
 // settings[21] (optional): a trial's budget of products (StepSettings::product_budget; 0: not a
 // trial); stats[14] (when stats has 15 entries) = 1 when the trial gave up (on the budget, on
 // stalled negative-curvature moves or on the stall rule: StepResult::trial_given_up).
+// settings[22] (optional): the contact's rows per node, 2 (n, t; the default) or 3 (n, t1, t2:
+// Coulomb's cone, StepProblem::contact_rows); with 3, contact = [tangentFree; mu; t2.u of
+// reference; r (3 per node, in/out)] and the table's column 5 holds t1.u of reference.
 long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM<double>* const& table,
                        KN<double>* const& contact, KN<double>* const& chi, KN<double>* const& T,
                        KN<double>* const& u, KN<double>* const& stats) {
   return guarded("StepSolveFraction", [&] {
-    if (settings->N() < 20 || settings->N() > 22) throw std::invalid_argument("settings must have 20 to 22 values");
+    if (settings->N() < 20 || settings->N() > 23) throw std::invalid_argument("settings must have 20 to 23 values");
     const bool keepStartUnconverged = settings->N() >= 21 && (*settings)[20] != 0;
     const long slot = lrint((*settings)[0]);
     if (slot < 0 || slot >= (long)StepSlots().size())
@@ -95,7 +98,10 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
     sma::StepSettings set;
     set.tol = (*settings)[10];
     set.maxit = (int)lrint((*settings)[11]);
-    if (settings->N() == 22) set.product_budget = (int)lrint((*settings)[21]);
+    if (settings->N() >= 22) set.product_budget = (int)lrint((*settings)[21]);
+    const long rows = settings->N() == 23 ? lrint((*settings)[22]) : 2;
+    if (rows != 2 && rows != 3) throw std::invalid_argument("settings[22]: contact rows per node must be 2 or 3");
+    p.contact_rows = (int)rows;
     if (std::getenv("SMA_STEP_TRACE")) set.trace = stderr;  // docs/parameters.md, "Step solver"
     p.psor.omega = (*settings)[12];
     p.psor.tol = (*settings)[13];
@@ -105,9 +111,10 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
     p.slip_maxit = (int)lrint((*settings)[17]);
     p.dissipation = (*settings)[18];
     p.dissipation_scale = (*settings)[19];
-    // m contact nodes: contact's length / 4 (a scene without contact passes none, and its table
-    // is not read).
-    const long n = chi->N(), nodes = p.heat->size(), dofs = p.stiffness->size(), m = contact->N() / 4;
+    // m contact nodes: contact's length / 4 (/ 6 on the cone; a scene without contact passes none,
+    // and its table is not read).
+    const long perNode = rows == 3 ? 6 : 4;
+    const long n = chi->N(), nodes = p.heat->size(), dofs = p.stiffness->size(), m = contact->N() / perNode;
     if (data->N() != 5 * n + 2 * nodes + 2 * dofs)
       throw std::invalid_argument("data must hold 5 arrays of " + std::to_string(n) + " points, 2 of " +
                                   std::to_string(nodes) + " heat nodes and 2 of " + std::to_string(dofs) +
@@ -124,25 +131,29 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
     if (m > 0 && (table->M() != 6 || table->N() != m))
       throw std::invalid_argument("the contact table must have 6 columns and a row per contact node (" +
                                   std::to_string(m) + ", from contact's length)");
-    if (contact->N() != 4 * m) throw std::invalid_argument("contact must hold tangentFree, mu and r: 4 values per node");
+    if (contact->N() != perNode * m)
+      throw std::invalid_argument(rows == 3 ? "contact must hold tangentFree, mu, t2.u of reference and r: 6 values per node"
+                                            : "contact must hold tangentFree, mu and r: 4 values per node");
     if (stats->N() != 14 && stats->N() != 15) throw std::invalid_argument("stats must have 14 or 15 entries");
     p.gap.resize(m);
-    p.slip_reference.resize(m);
+    p.slip_reference.resize((rows - 1) * m);
     Eigen::VectorXd threshold(m);
     for (long i = 0; i < m; ++i) {
       p.gap[i] = (*table)(i, 3L);
       threshold[i] = (*table)(i, 4L);
-      p.slip_reference[i] = (*table)(i, 5L);
+      p.slip_reference[(rows - 1) * i] = (*table)(i, 5L);
+      if (rows == 3) p.slip_reference[2 * i + 1] = (*contact)[2 * m + i];
     }
     SegmentInto(p.tangent_free, contact, 0, m, "contact");
     SegmentInto(p.mu, contact, m, m, "contact");
-    Eigen::VectorXd r = Segment(contact, 2 * m, 2 * m, "contact");
+    const long rStart = (perNode - rows) * m;  // r after the per-node values
+    Eigen::VectorXd r = Segment(contact, rStart, rows * m, "contact");
     if (!p.contact && m > 0) throw std::invalid_argument("the stiffness slot has no contact problem (SpdDelassus first)");
     Eigen::VectorXd x = Segment(chi, 0, n, "chi"), temperature(nodes), displacement(dofs);
     const sma::StepResult res = sma::solve_fraction_step(p, set, x, r, threshold, temperature, displacement);
     if (T->N() != nodes) T->resize(nodes);
     for (long i = 0; i < nodes; ++i) (*T)[i] = temperature[i];
-    for (long i = 0; i < 2 * m; ++i) (*contact)[2 * m + i] = r[i];
+    for (long i = 0; i < rows * m; ++i) (*contact)[rStart + i] = r[i];
     if (res.converged || !keepStartUnconverged) {
       for (long i = 0; i < n; ++i) (*chi)[i] = x[i];
       if (u->N() != dofs) u->resize(dofs);

@@ -1,0 +1,199 @@
+// The step solver on Coulomb's cone (StepProblem::contact_rows 3, plugin/core/step_newton.hpp):
+// its linearisation of the contact against finite differences on a state where nodes stick, slide
+// with both tangential motions free (the direction turning with the slip) and slide along one
+// (the other blocked by a support); and a whole step on the cone whose nodes have one tangential
+// motion blocked equals the same step on the 2D layout (n, t).
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "core/step_newton.hpp"
+#include "random_problems.hpp"
+
+namespace {
+
+// A small body pressed onto a rigid obstacle at m contact nodes: dofs (x, y, z) of 2m vertices,
+// the first m in contact (rows n = x, t1 = y, t2 = z), a random symmetric positive definite
+// stiffness; `points` phase points, each loading the dofs through a random column of B, with a
+// temperature of its own (heat nodes = points: a lumped capacity, no conduction). `blocked`:
+// the dofs a support holds (tgv rows), so that the contact rows through them carry nothing.
+struct ConeBody {
+  int m = 3, points = 6;
+  double dt = 0.1, capacity = 7900 * 837.0;  // rho C0 (J/m^3/K)
+  sma::SparseMatrix K, B, latent, interp, heat_matrix;
+  sma::SpdFactor stiffness, heat;
+  sma::DelassusFactor contact;
+  Eigen::VectorXd force, free, area;
+  std::vector<int> blocked;
+
+  int dofs() const { return 6 * m; }
+
+  // Rows of the contact operator for `rows` per node: (x, y, z) of vertex i, or (x, z) with 2.
+  sma::SparseMatrix contact_rows(int rows) const {
+    sma::SparseMatrix H(rows * m, dofs());
+    for (int i = 0; i < m; ++i) {
+      H.insert(rows * i, 3 * i) = 1.0;
+      if (rows == 3) H.insert(3 * i + 1, 3 * i + 1) = 1.0;
+      H.insert(rows * i + rows - 1, 3 * i + 2) = 1.0;
+    }
+    return H;
+  }
+
+  void build(unsigned seed, int rows) {
+    std::mt19937 rng(seed);
+    const Eigen::MatrixXd k = sma_test::random_spd(dofs(), rng) * 1e8;
+    std::normal_distribution<double> normal;
+    K = k.sparseView();
+    free = Eigen::VectorXd::Ones(dofs());
+    for (int j : blocked) {
+      free[j] = 0;
+      K.coeffRef(j, j) = 1e30;
+    }
+    Eigen::MatrixXd b(dofs(), points);
+    for (int j = 0; j < dofs(); ++j)
+      for (int e = 0; e < points; ++e) b(j, e) = 1e-6 * normal(rng);
+    B = b.sparseView();
+    area = Eigen::VectorXd::Constant(points, 1e-6);
+    // Pressed along x (the contact's normal) with tangential loads of either sign along y and z.
+    force = Eigen::VectorXd::Zero(dofs());
+    for (int i = 0; i < 2 * m; ++i) {
+      force[3 * i] = -1e3 * (1 + 0.5 * normal(rng));
+      force[3 * i + 1] = 4e2 * normal(rng);
+      force[3 * i + 2] = 4e2 * normal(rng);
+    }
+    stiffness.factorize(K);
+    std::vector<double> mask(free.data(), free.data() + dofs());
+    contact = sma::delassus_factor(stiffness, contact_rows(rows), mask, false);
+    latent = (Eigen::MatrixXd(area.asDiagonal())).sparseView();
+    interp = Eigen::MatrixXd::Identity(points, points).sparseView();
+    heat_matrix = (Eigen::MatrixXd::Identity(points, points) * (capacity * 1e-6 / dt)).sparseView();
+    heat.factorize(heat_matrix);
+  }
+
+  sma::StepProblem problem(int rows, double mu) const {
+    sma::StepProblem p;
+    p.heat = &heat;
+    p.heat_rhs = Eigen::VectorXd::Constant(points, capacity * 1e-6 / dt * 250.0);
+    p.heat_mask = Eigen::VectorXd::Ones(points);
+    p.latent = latent;
+    p.latent_scale = 7900 * 3000 / dt;
+    p.interp = interp;
+    p.stiffness = &stiffness;
+    p.contact = &contact;
+    p.contact_rows = rows;
+    p.load = B;
+    p.area = area;
+    p.force = force.cwiseProduct(free);
+    p.free = free;
+    p.gap = Eigen::VectorXd::Constant(m, -2e-7);  // an interference
+    p.slip_reference = Eigen::VectorXd::Zero((rows - 1) * m);
+    p.tangent_free = Eigen::VectorXd::Ones(m);
+    p.mu = Eigen::VectorXd::Constant(m, mu);
+    p.psor.omega = 1.0;
+    p.psor.tol = 1e-14;
+    p.psor.maxit = 100000;
+    p.psor.polish = 10;
+    p.slip_tol = 1e-14;
+    p.slip_maxit = 2000;
+    p.law = sma::ThermalLaw{7900, 300, 3000, 210, 280};
+    p.laminate = 1e11;
+    p.kappa = Eigen::VectorXd::Constant(points, 3000 / 837.0);  // L / C0
+    p.chi_start = Eigen::VectorXd::Zero(points);
+    p.b_start = Eigen::VectorXd::Zero(points);
+    return p;
+  }
+};
+
+// What each node does at the state s of a cone problem: 0 open, 1 stick, 2 slide with both
+// tangential motions free (and a slip), 3 slide along one.
+std::vector<int> cone_statuses(const sma::StepState& s, const ConeBody& body) {
+  std::vector<int> status;
+  for (int i = 0; i < body.m; ++i) {
+    const double rn = s.r[3 * i], rt = std::hypot(s.r[3 * i + 1], s.r[3 * i + 2]);
+    const bool both = body.contact.w(3 * i + 1, 3 * i + 1) != 0 && body.contact.w(3 * i + 2, 3 * i + 2) != 0;
+    status.push_back(!(rn > 0) ? 0 : rt < s.threshold[i] * (1 - 1e-9) ? 1 : both ? 2 : 3);
+  }
+  return status;
+}
+
+TEST(StepNewtonCone, LinearisationMatchesFiniteDifferences) {
+  // The first body (by seed) whose state holds a sticking node, a node sliding with both
+  // tangential motions free and a node sliding along its one free motion (vertex 2's y held).
+  // No latent heat (T stays where the heat right side puts it): the contact's share alone.
+  for (unsigned seed = 1; seed <= 60; ++seed) {
+    ConeBody body;
+    body.blocked = {3 * 2 + 1};
+    body.build(seed, 3);
+    sma::StepProblem p = body.problem(3, 0.3);
+    p.latent_scale = 0;
+    sma::StepResult stats;
+    sma::StepSolver solver(p, stats);
+    const Eigen::VectorXd r0 = Eigen::VectorXd::Zero(3 * body.m), g0 = Eigen::VectorXd::Zero(body.m);
+    // Fractions of the sign the state gives them (force_derivative holds the sign of the strain).
+    Eigen::VectorXd beta(body.points);
+    for (int e = 0; e < body.points; ++e) beta[e] = 0.2 + 0.1 * e;
+    sma::StepState s = solver.evaluate(beta, r0, g0);
+    for (int pass = 0; pass < 3; ++pass) s = solver.evaluate(s.sign.cwiseProduct(beta), r0, g0);
+    if (s.chi != s.sign.cwiseProduct(beta)) continue;
+    const std::vector<int> status = cone_statuses(s, body);
+    const bool stick = std::count(status.begin(), status.end(), 1) > 0;
+    const bool turn = std::count(status.begin(), status.end(), 2) > 0;
+    const bool line = std::count(status.begin(), status.end(), 3) > 0;
+    if (!(stick && turn && line)) continue;
+    // The cone's law at the state: |r_t| <= mu r_n at every node.
+    for (int i = 0; i < body.m; ++i)
+      EXPECT_LE(std::hypot(s.r[3 * i + 1], s.r[3 * i + 2]), 0.3 * s.r[3 * i] * (1 + 1e-12)) << "node " << i;
+    Eigen::VectorXd w(body.points);
+    std::mt19937 gen(seed);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    for (int e = 0; e < body.points; ++e) w[e] = unit(gen);
+    std::vector<char> upper((std::size_t)body.points, 0);
+    const Eigen::VectorXd analytic = solver.force_derivative(s, w, upper);
+    auto forces = [&](double t) {
+      const Eigen::VectorXd moved = beta + t * w;
+      const sma::StepState st = solver.evaluate(s.sign.cwiseProduct(moved), r0, g0);
+      EXPECT_EQ(cone_statuses(st, body), status) << "the statuses changed within the difference's step";
+      return Eigen::VectorXd(st.drive - st.q.cwiseProduct(moved));
+    };
+    const double h = 1e-4;
+    const Eigen::VectorXd fd = (forces(h) - forces(-h)) / (2 * h);
+    EXPECT_LE((fd - analytic).lpNorm<Eigen::Infinity>(), 1e-7 * analytic.lpNorm<Eigen::Infinity>()) << "seed " << seed;
+    return;
+  }
+  FAIL() << "no seed gave a state with a sticking node and nodes sliding in the plane and along a line";
+}
+
+// The cone whose every node has its y motion held is the 2D layout (n, z): the same step.
+TEST(StepNewtonCone, ConeWithOneTangentialMotionHeldIsThe2dLayout) {
+  for (unsigned seed : {3u, 11u}) {
+    ConeBody cone, plane;
+    for (int i = 0; i < cone.m; ++i) cone.blocked.push_back(3 * i + 1);
+    plane.blocked = cone.blocked;
+    cone.build(seed, 3);
+    plane.build(seed, 2);
+    const sma::StepProblem pc = cone.problem(3, 0.2), pp = plane.problem(2, 0.2);
+    Eigen::VectorXd chi_c = Eigen::VectorXd::Zero(cone.points), chi_p = chi_c;
+    Eigen::VectorXd rc = Eigen::VectorXd::Zero(3 * cone.m), rp = Eigen::VectorXd::Zero(2 * cone.m);
+    Eigen::VectorXd gc = Eigen::VectorXd::Zero(cone.m), gp = gc;
+    Eigen::VectorXd Tc(cone.points), Tp(cone.points), uc(cone.dofs()), up(cone.dofs());
+    const sma::StepResult a = sma::solve_fraction_step(pc, sma::StepSettings{}, chi_c, rc, gc, Tc, uc);
+    const sma::StepResult b = sma::solve_fraction_step(pp, sma::StepSettings{}, chi_p, rp, gp, Tp, up);
+    ASSERT_TRUE(a.converged && b.converged) << a.failure << " / " << b.failure;
+    int sliding = 0;
+    for (int i = 0; i < cone.m; ++i) {
+      EXPECT_EQ(rc[3 * i + 1], 0.0);
+      EXPECT_NEAR(rc[3 * i], rp[2 * i], 1e-10 * rp.lpNorm<Eigen::Infinity>());
+      EXPECT_NEAR(rc[3 * i + 2], rp[2 * i + 1], 1e-10 * rp.lpNorm<Eigen::Infinity>());
+      sliding += rp[2 * i] > 0 && std::fabs(rp[2 * i + 1]) >= gp[i] * (1 - 1e-9);
+    }
+    EXPECT_GT(sliding, 0) << "seed " << seed << ": no node slides, the friction is not tested";
+    EXPECT_LE((chi_c - chi_p).lpNorm<Eigen::Infinity>(), 1e-9);
+    EXPECT_LE((uc - up).lpNorm<Eigen::Infinity>(), 1e-9 * up.lpNorm<Eigen::Infinity>());
+    EXPECT_LE((Tc - Tp).lpNorm<Eigen::Infinity>(), 1e-9 * Tp.lpNorm<Eigen::Infinity>());
+  }
+}
+
+}  // namespace
