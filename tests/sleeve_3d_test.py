@@ -22,7 +22,7 @@ model, which solves the same problem (issue 49, its first check).
    0.5 % of the axisymmetric one, and at every increment the sleeve's axial balance (1e-9), the
    cone, complementarity and no penetration.
 4. Bad input fails naming the option: -nt 1, -pipeE 2e11, -plane stress, -pullout without -mu,
-   -pullout with -bend.
+   -pullout with -bend, -cone 1 without friction.
 5. Bending (the half section, the pipe turned about y), frictionless at 1e-3 rad: no node opens and
    the moment's increments are equal to 1e-8 (a linear problem); the half section's clamping within
    1e-3 of the quarter's; at every increment the moment balance of the sleeve (its support on z = 0
@@ -48,6 +48,13 @@ model, which solves the same problem (issue 49, its first check).
    are mirror-symmetric about every grid line theta_j, so a radial load moves no bore node around the
    ring; solid-3d.idp Solid3dMeshBuild). The pull-out's circumferential reactions likewise (1e-8),
    also while part of the bore sticks (its first increment: the nodes on the plane x = 0 exactly on it).
+10. The clamping on Coulomb's cone (rows (n, e_theta, e_z), the step solver's cone: -length 0.02, nr 2,
+   nt 8, -mu 0.2). On the round pipe (-cone 1) it is the clamping of the rows (n, e_z): the same steps,
+   the reactions within 1e-4 of the largest (the two contact solvers' tolerances carried along the
+   history; 6e-6 measured), the circumferential ones 0 to 1e-8. On the elliptic pipe with free ends
+   (which takes the cone): the invariants of 2. on the step solver without a fall-back, friction around
+   the section and along z at once (both filtered traction densities of contact-final.csv nonzero), the
+   traction never above mu p (node by node: |r_t| <= mu r_n is 2.'s cone).
 Writes results/checks/sleeve_3d.json.
 """
 import math
@@ -300,10 +307,44 @@ def main():
     check(all(0 < t <= 0.01 * ref for t in traction), f"-ends held -mu 0.2, elliptic pipe: |traction| {traction[0] / 1e6:.3f}, "
           f"{traction[1] / 1e6:.3f} MPa at nr 2, 3, under 1 % of the pressure (2D: {traction2d / 1e6:.3f} MPa)")
 
+    # 10. the clamping on Coulomb's cone
+    cone_args = ("-length", "0.02", "-nr", "2", "-nt", "8", "-mu", "0.2")
+    two_rows = run("sleeve-3d", "cone-off", *cone_args)
+    cone_round = run("sleeve-3d", "cone-round", *cone_args, "-cone", "1")
+    cone_ellipse = run("sleeve-3d", "cone-ellipse", *cone_args, "-pipeB", "0.0504")
+    a = rows(os.path.join(cone_round["out"], "contact-final.csv"))
+    b = rows(os.path.join(two_rows["out"], "contact-final.csv"))
+    largest = max(float(r["normal_force"]) for r in b)
+    dn = max(abs(float(x["normal_force"]) - float(y["normal_force"])) for x, y in zip(a, b)) / largest
+    dz = max(abs(float(x["tangential_force_z"]) - float(y["tangential_force"])) for x, y in zip(a, b)) / largest
+    dt = max(abs(float(x["tangential_force_theta"])) for x in a) / largest
+    figures["cone"] = {"round_normal_difference": dn, "round_axial_difference": dz, "round_theta_largest": dt}
+    check(cone_round["summary"]["contact_tangent"] == "cone" and two_rows["summary"]["contact_tangent"] == "e_z"
+          and len(a) == len(b) and cone_round["summary"]["n_steps"] == two_rows["summary"]["n_steps"]
+          and dn <= 1e-4 and dz <= 1e-4 and dt <= 1e-8,
+          f"-mu 0.2, round pipe: the cone's clamping (-cone 1) is the rows (n, e_z)'s: {cone_round['summary']['n_steps']} "
+          f"steps against {two_rows['summary']['n_steps']}, reactions within {dn:.1e} (normal) and {dz:.1e} (axial) of "
+          f"the largest (<= 1e-4), circumferential {dt:.1e} (<= 1e-8)")
+    invariants("-mu 0.2 -pipeB 0.0504, free ends (the cone)", cone_ellipse)
+    se = cone_ellipse["summary"]
+    nodes = rows(os.path.join(cone_ellipse["out"], "contact-final.csv"))
+    theta = max(abs(float(r["tangential_density_theta"])) for r in nodes)
+    axial = max(abs(float(r["tangential_density_z"])) for r in nodes)
+    pressure = max(float(r["pressure_filtered"]) for r in nodes)
+    figures["cone"].update({"ellipse_traction_theta_max": theta, "ellipse_traction_z_max": axial,
+                            "ellipse_pressure_max": pressure, "ellipse_steps": se["n_steps"],
+                            "ellipse_pressure_mid": se["final_pressure_mid"]})
+    check(se["contact_tangent"] == "cone" and se["step_solver"] == "newton" and se["step_fallbacks"] == 0
+          and 0 < theta and 0 < axial <= 0.2 * pressure * (1 + 1e-9),
+          f"-mu 0.2 -pipeB 0.0504, free ends: the clamping on the cone by the step solver ({se['step_solver']}, "
+          f"{se['step_fallbacks']} fall-backs), friction around the section and along z at once: filtered traction "
+          f"densities up to {theta / 1e6:.3f} MPa (e_theta) and {axial / 1e6:.2f} MPa (e_z, <= mu p = "
+          f"{0.2 * pressure / 1e6:.2f} MPa)")
+
     # 4. bad input
     for args, culprit in ((["-nt", "1"], "-nt"), (["-pipeE", "2e11"], "-pipeE"), (["-plane", "stress"], "-plane"),
                           (["-pullout", "1e-4"], "-mu"), (["-mu", "0.2", "-pullout", "1e-4", "-bend", "1e-3"], "-bend"),
-                          (["-pipeB", "0.0505", "-pipeA", "0.0504", "-Ri", "0.05", "-mu", "0.2"], "-ends held"),
+                          (["-cone", "1"], "-cone"), (["-cone", "2", "-mu", "0.2"], "-cone"),
                           (["-ends", "held", "-bend", "1e-3"], "-ends")):
         _, done = run_scene_captured("sleeve-3d", "sleeve-3d-bad", *COMMON, *args)
         check(done.returncode != 0 and culprit in done.stderr + done.stdout,
