@@ -137,7 +137,7 @@ inline void project_node(const Eigen::MatrixXd& W, const Eigen::VectorXd& g, Eig
 }  // namespace cone_detail
 
 inline bool polish_cone(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, const Eigen::VectorXd& g, double accept,
-                        Eigen::VectorXd& r, int max_rounds = 15) {
+                        Eigen::VectorXd& r, int max_rounds = 15, const Eigen::VectorXd* coulomb_mu = nullptr) {
   const Eigen::Index m = g.size(), n = 3 * m;
   Eigen::VectorXd rho(n);
   for (Eigen::Index i = 0; i < m; ++i) {
@@ -149,14 +149,26 @@ inline bool polish_cone(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, cons
   // D is block diagonal (3 x 3 per node): held as an n x 3 matrix of the blocks, so that
   // J = I - D + D diag(rho) W costs 9 n^2 rather than a dense product's n^3.
   Eigen::MatrixXd block(3, 3);
+  // Coulomb's radius g = mu max(0, x_n) of the iterate itself (coulomb_mu; Alart and Curnier's),
+  // else the given thresholds; `slope` (Coulomb) the tangential rows' derivative along their
+  // node's x_n, mu d on the circle (d the sliding direction), 0 inside.
+  Eigen::VectorXd radius = g, slope;
   const auto natural = [&](const Eigen::VectorXd& x, Eigen::VectorXd& F, Eigen::MatrixXd* D) {
     const Eigen::VectorXd z = x - rho.cwiseProduct(W * x - q);
     Eigen::VectorXd p(n);
     if (D) D->setZero(n, 3);
+    if (coulomb_mu) {
+      for (Eigen::Index i = 0; i < m; ++i) radius[i] = (*coulomb_mu)[i] * std::max(0.0, x[3 * i]);
+      if (D) slope.setZero(n);
+    }
     for (Eigen::Index i = 0; i < m; ++i) {
       block.setZero();
-      cone_detail::project_node(W, g, i, z, p, D ? &block : nullptr, 3 * i);
+      cone_detail::project_node(W, radius, i, z, p, D ? &block : nullptr, 3 * i);
       if (D) D->middleRows(3 * i, 3) = block;
+      if (D && coulomb_mu && x[3 * i] > 0.0 && radius[i] > 0.0)
+        for (int c = 1; c <= 2; ++c)  // on the circle (or the segment's end): |p_t| = radius
+          if (block(c, c) != 1.0 && (p[3 * i + 1] != 0.0 || p[3 * i + 2] != 0.0))
+            slope[3 * i + c] = (*coulomb_mu)[i] * p[3 * i + c] / radius[i];
     }
     F = x - p;
   };
@@ -164,12 +176,14 @@ inline bool polish_cone(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, cons
   // outside them by round-off) when the laws hold to accept there.
   const auto accepted = [&](const Eigen::VectorXd& x) {
     Eigen::VectorXd y = x;
+    Eigen::VectorXd gy = g;
     for (Eigen::Index i = 0; i < m; ++i) {
       y[3 * i] = std::max(0.0, y[3 * i]);
-      const Eigen::Vector2d t = project_disk(Eigen::Vector2d(y[3 * i + 1], y[3 * i + 2]), g[i]);
+      if (coulomb_mu) gy[i] = (*coulomb_mu)[i] * y[3 * i];
+      const Eigen::Vector2d t = project_disk(Eigen::Vector2d(y[3 * i + 1], y[3 * i + 2]), gy[i]);
       y[3 * i + 1] = t[0], y[3 * i + 2] = t[1];
     }
-    if (!(cone_law_residual(W, q, g, y) <= accept)) return false;
+    if (!(cone_law_residual(W, q, gy, y) <= accept)) return false;
     r = y;
     return true;
   };
@@ -183,6 +197,7 @@ inline bool polish_cone(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, cons
       const Eigen::Matrix3d Di = D.middleRows(3 * i, 3);
       J.middleRows(3 * i, 3).noalias() = Di * (rho.segment(3 * i, 3).asDiagonal() * W.middleRows(3 * i, 3));
       J.block(3 * i, 3 * i, 3, 3) += Eigen::Matrix3d::Identity() - Di;
+      if (coulomb_mu) J.block(3 * i + 1, 3 * i, 2, 1) -= slope.segment(3 * i + 1, 2);
     }
     const Eigen::VectorXd step = J.partialPivLu().solve(-F);
     if (!step.allFinite()) return false;
@@ -211,7 +226,8 @@ inline bool polish_cone(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, cons
 // keeps the polishes to log2 of the sweeps and adds at most as many sweeps as were already done.
 // Throws on inconsistent input; the caller reads `converged`, `iterations`, `residual`, `polishes`.
 inline PsorResult psor_cone(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, const Eigen::VectorXd& g,
-                            double omega, double tol, int maxit, Eigen::VectorXd& r, int polish_every = 0) {
+                            double omega, double tol, int maxit, Eigen::VectorXd& r, int polish_every = 0,
+                            const Eigen::VectorXd* coulomb_mu = nullptr) {
   const Eigen::Index m = g.size();
   if (W.rows() != 3 * m || W.cols() != 3 * m || q.size() != 3 * m || r.size() != 3 * m)
     throw std::invalid_argument("psor_cone: W must be 3m x 3m and q, r of length 3m for m = " + std::to_string(m) +
@@ -250,8 +266,13 @@ inline PsorResult psor_cone(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, 
       throw std::invalid_argument("psor_cone: the tangential 2 x 2 block of the Delassus operator is not positive "
                                   "definite at contact node " + std::to_string(i));
   }
+  if (coulomb_mu && (coulomb_mu->size() != m || !(coulomb_mu->minCoeff() >= 0.0)))
+    throw std::invalid_argument("psor_cone: Coulomb's coefficients must be m values >= 0");
   PsorResult result;
   Eigen::VectorXd w = W * r - q;  // kept up to date column by column
+  // The disk's radius per node: g, or on Coulomb's cone (coulomb_mu) mu r_n of the sweep's own
+  // normal reaction, taken as soon as the node's normal component is updated.
+  Eigen::VectorXd radius = g;
   long long polish_wait = polish_every, next_polish = polish_every;  // (long: doubled past maxit)
   while (result.iterations < maxit) {
     ++result.iterations;
@@ -266,13 +287,14 @@ inline PsorResult psor_cone(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, 
       }
       change = std::max(change, std::fabs(newN - oldN));
       size = std::max(size, newN);
-      if (g[i] == 0.0 && r[n + 1] == 0.0 && r[n + 2] == 0.0) continue;  // frictionless or blocked: r_t stays 0
+      if (coulomb_mu) radius[i] = (*coulomb_mu)[i] * newN;
+      if (radius[i] == 0.0 && r[n + 1] == 0.0 && r[n + 2] == 0.0) continue;  // frictionless or blocked: r_t stays 0
       const Eigen::Vector2d oldT(r[n + 1], r[n + 2]);
       const Eigen::Matrix2d A = W.block<2, 2>(n + 1, n + 1);
       // the pair's local problem with the others fixed: w_t(x) = A (x - oldT) + w_t
       const Eigen::Vector2d b = A * oldT - Eigen::Vector2d(w[n + 1], w[n + 2]);
-      const Eigen::Vector2d exact = tresca_disk_local(A, b, g[i]);
-      const Eigen::Vector2d newT = project_disk(oldT + omega * (exact - oldT), g[i]);
+      const Eigen::Vector2d exact = tresca_disk_local(A, b, radius[i]);
+      const Eigen::Vector2d newT = project_disk(oldT + omega * (exact - oldT), radius[i]);
       const Eigen::Vector2d delta = newT - oldT;
       if (delta[0] != 0.0 || delta[1] != 0.0) {
         r[n + 1] = newT[0];
@@ -291,8 +313,10 @@ inline PsorResult psor_cone(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, 
     // fixed point around this needs its answers to better than its own tolerance)
     if (polish_every > 0 && result.iterations == next_polish) {
       ++result.polishes;
-      if (polish_cone(W, q, g, tol, r)) {
-        result.residual = cone_law_residual(W, q, g, r);
+      if (polish_cone(W, q, g, tol, r, 15, coulomb_mu)) {
+        if (coulomb_mu)
+          for (Eigen::Index i = 0; i < m; ++i) radius[i] = (*coulomb_mu)[i] * r[3 * i];
+        result.residual = cone_law_residual(W, q, radius, r);
         result.converged = true;
         break;
       }

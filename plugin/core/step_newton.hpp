@@ -946,6 +946,17 @@ class StepSolver {
       } else {
         run_psor(q, s);
       }
+    } else if (cone()) {
+      // Coulomb's cone at once: the disk's radius mu r_n inside the sweeps and the polish
+      // (psor_cone's coulomb_mu), not the slip-threshold fixed point around Tresca solves, whose
+      // every iteration factorised the whole 3m x 3m polish (docs/model.md, the clamping on
+      // Coulomb's cone); the thresholds then read mu r_n of the answer.
+      update_thresholds(s);
+      if (cone_mu_.size() != p_.mu.size()) cone_mu_ = p_.mu.cwiseProduct(p_.tangent_free);
+      run_psor(q, s, &cone_mu_);
+      update_thresholds(s);
+      stats_.slip_iterations += 1;
+      cone_slip(q, s);
     } else {
       update_thresholds(s);
       int it = 0;
@@ -961,7 +972,6 @@ class StepSolver {
         throw std::runtime_error("slip-threshold fixed point (Coulomb) did not converge: " + std::to_string(it) +
                                  " iterations, relative change of g " + std::to_string(change) + " > tol " +
                                  std::to_string(p_.slip_tol));
-      if (cone()) cone_slip(q, s);
     }
     add_contact_load_sparse(d, s.r, z, work_.load);
     p_.stiffness->backward_in_place(z, span<double>(s.u.data(), (std::size_t)s.u.size()));
@@ -1002,9 +1012,10 @@ class StepSolver {
 
   bool cone() const { return p_.contact_rows == 3; }
 
-  int run_psor(const Eigen::VectorXd& q, StepState& s) {
+  int run_psor(const Eigen::VectorXd& q, StepState& s, const Eigen::VectorXd* coulomb_mu = nullptr) {
     const PsorResult res =
-        cone() ? psor_cone(p_.contact->w, q, s.threshold, p_.psor.omega, p_.psor.tol, p_.psor.maxit, s.r, p_.psor.polish)
+        cone() ? psor_cone(p_.contact->w, q, s.threshold, p_.psor.omega, p_.psor.tol, p_.psor.maxit, s.r, p_.psor.polish,
+                           coulomb_mu)
                : psor_condensed(p_.contact->w, q, s.threshold, p_.psor.omega, p_.psor.tol, p_.psor.maxit, s.r,
                                 p_.psor.polish);
     stats_.psor_sweeps += res.iterations;
@@ -1737,6 +1748,7 @@ class StepSolver {
   bool interp_rows_made_ = false;    // interp_by_rows made the problem's copy in this step
   std::vector<Eigen::Index> all_;    // 0 .. n-1 (force_derivative's support)
   std::vector<int> column_of_row_;   // contact row -> column of the Delassus factor's Y (-1: none)
+  Eigen::VectorXd cone_mu_;          // mu .* tangent_free: Coulomb's coefficient per node on the cone (0 where held)
 };
 
 // Solves the step (see the header); chi, r, threshold in/out; T, u out.

@@ -52,15 +52,18 @@ void expect_laws(const ConeProblem& p, const Eigen::VectorXd& r, double tol, Sta
     EXPECT_LE(std::fabs(rn * wn), tol * scale * scale) << "node " << i;
     EXPECT_LE(rt.norm(), p.g[i] * (1 + disk_tol) + 1e-300) << "node " << i;
     if (rn <= tol * scale) count.separated++;
+    // (the slip's laws at a pressing node: a separated one, r_n 0 to round-off, may move as it
+    // will, its r_t within round-off's disk, already checked)
+    if (rn <= tol * scale) continue;
     if (rt.norm() < p.g[i] * (1 - std::max(1e-9, disk_tol))) {
       EXPECT_LE(wt.norm(), tol * scale) << "node " << i << " sticks but slips";
-      if (rn > tol * scale) count.sticking++;
+      count.sticking++;
     } else if (p.g[i] > 0) {
       // sliding: w_t antiparallel to r_t (its component along r_t <= 0, across it 0)
       const Eigen::Vector2d dir = rt / rt.norm();
       EXPECT_LE(wt.dot(dir), tol * scale) << "node " << i;
       EXPECT_LE(std::fabs(wt[0] * dir[1] - wt[1] * dir[0]), tol * scale) << "node " << i;
-      if (rn > tol * scale) count.sliding++;
+      count.sliding++;
     }
   }
 }
@@ -205,6 +208,47 @@ TEST(PsorCone, CoulombFixedPointReachesTheCone) {
     EXPECT_LE(sma::cone_law_residual(p.W, p.q, p.g, r), 1e-10) << "trial " << trial;
     // (the thresholds of the last iterate differ from mu r_n by at most slip_tol of the largest)
     expect_laws(p, r, 1e-9, count, 1e-9);
+  }
+  EXPECT_GT(count.sticking, 5);
+  EXPECT_GT(count.sliding, 5);
+}
+
+// Coulomb at once (psor_cone's coulomb_mu: the radius mu r_n inside the sweeps and the polish,
+// Alart and Curnier's) gives the fixed point's answer: on the random problems above (sticking and
+// sliding nodes) and on badly conditioned ones (W's eigenvalues from 1e-6 to 1), where it needs
+// the polish, with its derivative of the radius; one call, a law residual of 1e-10 with
+// g = mu r_n.
+TEST(PsorCone, CoulombAtOnceIsTheFixedPoint) {
+  std::mt19937 rng(1);
+  std::normal_distribution<double> normal;
+  Statuses count;
+  for (int trial = 0; trial < 64; ++trial) {
+    const int m = trial < 60 ? 1 + trial % 5 : 12;
+    ConeProblem p;
+    if (trial < 60) {
+      p = random_cone(m, 1.0, rng);
+      for (int i = 0; i < m; ++i) p.q[3 * i] = std::fabs(p.q[3 * i]) + 0.2;
+    } else {
+      Eigen::VectorXd eigen(3 * m);
+      for (int k = 0; k < 3 * m; ++k) eigen[k] = std::pow(10.0, -6.0 * k / (3 * m - 1));
+      p.W = sma_test::random_symmetric(eigen, rng, normal);
+      p.q.resize(3 * m);
+      p.g = Eigen::VectorXd::Constant(m, 0.3);
+      for (int k = 0; k < 3 * m; ++k) p.q[k] = 0.01 * normal(rng);
+      for (int i = 0; i < m; ++i) p.q[3 * i] = std::fabs(p.q[3 * i]) + 0.01;
+    }
+    const Eigen::VectorXd mu = p.g;
+    Eigen::VectorXd fixed = Eigen::VectorXd::Zero(3 * m), once = fixed;
+    const sma::ConeFixedPointResult fp = sma::coulomb_cone_fixed_point(p.W, p.q, mu, 1.3, 1e-15, 200000, 1e-13, 500, fixed);
+    ASSERT_TRUE(fp.converged) << "trial " << trial;
+    const Eigen::VectorXd start = Eigen::VectorXd::Zero(m);
+    const sma::PsorResult res = sma::psor_cone(p.W, p.q, start, 1.3, 1e-12, 200000, once, 10, &mu);
+    ASSERT_TRUE(res.converged) << "trial " << trial;
+    for (int i = 0; i < m; ++i) p.g[i] = mu[i] * once[3 * i];
+    EXPECT_LE(sma::cone_law_residual(p.W, p.q, p.g, once), 1e-10) << "trial " << trial;
+    EXPECT_LE((once - fixed).lpNorm<Eigen::Infinity>(), 1e-8 * fixed.lpNorm<Eigen::Infinity>()) << "trial " << trial;
+    if (trial >= 60) { EXPECT_GE(res.polishes, 1) << "trial " << trial; }
+    expect_laws(p, once, 1e-8, count, 1e-9);
   }
   EXPECT_GT(count.sticking, 5);
   EXPECT_GT(count.sliding, 5);
