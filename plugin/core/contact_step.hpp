@@ -143,10 +143,11 @@ inline Eigen::VectorXd cone_free_motion(const DelassusFactor& d, const Eigen::Ve
 // q = (-(n.u_free + gap), -(t1.u_free - ref1), -(t2.u_free - ref2)), a tangential row whose motion
 // a support blocks (its Delassus diagonal 0) taking q = 0; then the sweeps, and u as
 // condensed_global_step's: one forward and one backward solve.
+// coulomb_mu (m values): Coulomb's cone at once (psor_cone's), threshold the radius to start from.
 inline PsorResult condensed_cone_step(const SpdFactor& k, const DelassusFactor& d, span<const double> rhs,
                                       span<const double> gap, span<const double> threshold,
                                       span<const double> slip_reference, const ContactStepSettings& settings,
-                                      Eigen::VectorXd& r, span<double> u) {
+                                      Eigen::VectorXd& r, span<double> u, const Eigen::VectorXd* coulomb_mu = nullptr) {
   const Eigen::Index m = (Eigen::Index)gap.size(), n = k.size();
   if (d.w.rows() != 3 * m || d.y.rows() != n || (Eigen::Index)d.rows.size() != 3 * m)
     throw std::invalid_argument("the cone's contact problem has " + std::to_string(d.w.rows()) + " rows (all formed: " +
@@ -157,7 +158,7 @@ inline PsorResult condensed_cone_step(const SpdFactor& k, const DelassusFactor& 
   Eigen::VectorXd z = k.forward(rhs);
   const Eigen::VectorXd q = cone_free_motion(d, contact_motion(d, z), gap, slip_reference);
   const Eigen::VectorXd g = Eigen::Map<const Eigen::VectorXd>(threshold.begin(), m);
-  const PsorResult res = psor_cone(d.w, q, g, settings.omega, settings.tol, settings.maxit, r, settings.polish);
+  const PsorResult res = psor_cone(d.w, q, g, settings.omega, settings.tol, settings.maxit, r, settings.polish, coulomb_mu);
   add_contact_load(d, r, z);
   k.backward(z, u);
   return res;

@@ -177,8 +177,14 @@ inline bool polish_cone(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, cons
   const auto accepted = [&](const Eigen::VectorXd& x) {
     Eigen::VectorXd y = x;
     Eigen::VectorXd gy = g;
+    // On Coulomb's cone a node the natural map leaves open (z_n <= 0) is open exactly: Newton's
+    // iterate may hold round-off there (1e-27), which would read as pressing, with a disk of its
+    // own (its radius mu r_n).
+    Eigen::VectorXd wy;
+    if (coulomb_mu) wy = W * y - q;
     for (Eigen::Index i = 0; i < m; ++i) {
       y[3 * i] = std::max(0.0, y[3 * i]);
+      if (coulomb_mu && !(y[3 * i] - rho[3 * i] * wy[3 * i] > 0.0)) y[3 * i] = 0.0;
       if (coulomb_mu) gy[i] = (*coulomb_mu)[i] * y[3 * i];
       const Eigen::Vector2d t = project_disk(Eigen::Vector2d(y[3 * i + 1], y[3 * i + 2]), gy[i]);
       y[3 * i + 1] = t[0], y[3 * i + 2] = t[1];

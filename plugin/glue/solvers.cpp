@@ -145,24 +145,30 @@ long ContactStepReturned(const sma::PsorResult& res, const Eigen::VectorXd& rv, 
 
 // One condensed 3D contact step (plugin/core/contact_step.hpp condensed_cone_step) on the contact
 // problem SpdDelassus formed in slot `handle` with three rows per node (n, t1, t2), all formed;
-// table: one row per node [gap, threshold g, t1.u at the stage's start, t2.u at it];
+// table: one row per node [gap, threshold g, t1.u at the stage's start, t2.u at it], and with a
+// fifth column mu Coulomb's cone at once (the disk's radius mu r_n inside the sweeps and the
+// polish: psor_cone's coulomb_mu; g is then only the radius the sweeps start from);
 // settings = [omega, tol, maxit, polish]; r = (r_n, r_t1, r_t2) per node, the warm start, in/out.
 long SpdConeStep(long const& handle, KN<double>* const& rhs, KNM<double>* const& table, KN<double>* const& settings,
                  KN<double>* const& r, KN<double>* const& u, KN<double>* const& info) {
   return guarded("SpdConeStep", [&] {
-    FactorSlot& slot = ContactSlotChecked(handle, rhs, table, 4, "4 columns [gap, g, t1.u, t2.u]", settings, r, 3, info);
+    const bool coulomb = table->N() > 0 && table->M() == 5;
+    FactorSlot& slot = ContactSlotChecked(handle, rhs, table, coulomb ? 5 : 4,
+                                          "4 columns [gap, g, t1.u, t2.u], or 5 [gap, g, t1.u, t2.u, mu]", settings, r, 3, info);
     const long m = table->N(), n = slot.factor.size();
     std::vector<double> gap(m), threshold(m), reference(2 * m);
+    Eigen::VectorXd mu(coulomb ? m : 0);
     for (long i = 0; i < m; ++i) {
       gap[i] = (*table)(i, 0L);
       threshold[i] = (*table)(i, 1L);
       reference[2 * i] = (*table)(i, 2L);
       reference[2 * i + 1] = (*table)(i, 3L);
+      if (coulomb) mu[i] = (*table)(i, 4L);
     }
     if (u->N() != n) u->resize(n);
     Eigen::VectorXd rv = Eigen::Map<const Eigen::VectorXd>(&(*r)[0], 3 * m);
     const sma::PsorResult res = sma::condensed_cone_step(slot.factor, *slot.contact, cview(rhs), gap, threshold, reference,
-                                                         ContactSettingsOf(settings), rv, view(u));
+                                                         ContactSettingsOf(settings), rv, view(u), coulomb ? &mu : nullptr);
     return ContactStepReturned(res, rv, r, info);
   });
 }
