@@ -16,6 +16,10 @@ method (docs/parameters.md, "Step solver"):
   - the fall-back: with -stepmaxit 1 the steps newton leaves unsolved are solved again by the
     nested loops (counted in summary.json), giving their curve; with -stepfallback 0 the run fails
     naming the loop;
+  - a -steptol below the floor the contact solves leave (sleeve-3d, friction, 1e-11) fails at the
+    first step that meets it, saying so and naming -steptol, where such steps were taken again
+    shorter until their start met it (13936 steps to half the run); with -keepgoing 1 the run ends
+    with no step taken shorter and none handed to the nested loops;
   - a variant that replaces the law's LocalStep hook (edp/variants/sleeve-asymmetric-law.edp)
     runs the nested loops under -stepsolver auto, and -stepsolver newton there fails naming the
     hook; -stepsolver newton with -psormode full fails naming it; an unknown -stepsolver fails.
@@ -29,7 +33,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools", "bench", "oracles"))
 
-from checklib import ROOT, TEST_RESULTS, check, finish, record, rows, run_scene  # noqa: E402
+from checklib import ROOT, TEST_RESULTS, check, finish, record, rows, run_scene, run_scene_captured  # noqa: E402
 from curve_error import curve_error  # noqa: E402
 
 PAPER = ["-a", "3000", "-interference", "0.0005"]
@@ -123,6 +127,21 @@ def main():
                        ["step solver", "newton", "did not converge", "-stepmaxit"], steps="600")
     check(ok, f"-stepmaxit 1 -stepfallback 0 fails naming the loop: {line}")
     figures["fallback"] = {"fallback_steps": sforced["step_fallbacks"], "pressure_l1_transient": ef["l1_transient"]}
+    # A tolerance below the floor of the step's equations as solved: the contact solves' noise.
+    floor_args = ["-length", "0.02", "-nr", "2", "-nt", "8", "-mu", "0.2", "-steptol", "1e-11", "-quiet", "1"]
+    _, p = run_scene_captured("sleeve-3d", "step-solver-floor", *floor_args)
+    lines = [line for line in (p.stdout + p.stderr).splitlines() if line.startswith("error:")]
+    words = ["step solver", "that residual is at its floor", "-psortol", "-steptol 1e-11", "raise -steptol to 1e-"]
+    check(p.returncode == 1 and len(lines) == 1 and all(w in lines[0] for w in words),
+          f"-steptol 1e-11 below the contact's floor fails at once, saying so: {(lines or [p.stderr[-300:]])[0]}")
+    kept, p = run_scene_captured("sleeve-3d", "step-solver-floor-keepgoing", *floor_args, "-keepgoing", "1")
+    check(p.returncode == 0, f"-keepgoing 1 at the floor runs to its end (exit {p.returncode}: {p.stderr[-300:]})")
+    skept = json.load(open(os.path.join(kept, "summary.json")))
+    check(skept["unconverged_steps"] >= 1 and skept["steps_retried"] == 0 and skept["step_fallbacks"] == 0
+          and skept["n_steps"] < 1000,
+          f"-keepgoing 1 goes on from the floor: {skept['unconverged_steps']} steps at it, none taken shorter "
+          f"({skept['steps_retried']}) or by the nested loops ({skept['step_fallbacks']}), {skept['n_steps']} steps")
+    figures["floor"] = {"steps_at_floor": skept["unconverged_steps"], "steps": skept["n_steps"]}
     # An unstable block that pins one point per active-set round: at a = 2875 the paper's elliptic
     # pipe with friction met a 35-point block at step 599 that 12 rounds left creeping (the residual
     # 1.5 % lower an iteration) and that the nested loops could not solve either (1000 fixed-point

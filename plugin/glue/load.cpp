@@ -65,7 +65,8 @@
 //       one time step of the fraction model by the globalised Newton method of
 //       plugin/core/step_newton.hpp (the packing of the arrays: at the function below); returns
 //       its iterations; settings[20] = 1 keeps chi, u and the slip thresholds of a step that does
-//       not converge at the step's start (the caller's fall-back). A step that does not converge returns stats[0] = 0, and
+//       not converge at the step's start (the caller's fall-back; not one at its residual's floor,
+//       stats[15]). A step that does not converge returns stats[0] = 0, and
 //   string StepFailureMessage(long)   says why ("" after a converged step).
 //   long StepFractionRecord(real[] [rho L / dt, rho, a, L, T0, Tc], matrix Q, matrix Interp,
 //                           real[] chi, real[] T, real[] b, real[] load, real[] s)
@@ -176,7 +177,7 @@
 // the file that the launchers read before FreeFEM starts (tools/launcher-common.sh): FreeFEM
 // compiles a whole script before running any of it, so a plugin that lacks a function the scene
 // calls stops at compilation ("The Identifier ... does not exist") before plugin.idp's check runs.
-#define SMA_PLUGIN_VERSION 23
+#define SMA_PLUGIN_VERSION 24
 #define SMA_STRINGIFY(x) #x
 #define SMA_VERSION_STAMP(v) "sma-plugin-version " SMA_STRINGIFY(v) ";"
 extern "C" __attribute__((used, visibility("default")))

@@ -71,8 +71,11 @@ Eigen::VectorXd Segment(KN<double>* a, long start, long length, const char* what
 // settings[20] (optional) = 1: a step that does not converge leaves chi, u and the table's slip
 // thresholds as they came in (the step's start, for the caller's fall-back: no copies of them).
 // settings[21] (optional): a trial's budget of products (StepSettings::product_budget; 0: not a
-// trial); stats[14] (when stats has 15 entries) = 1 when the trial gave up (on the budget, on
-// stalled negative-curvature moves or on the stall rule: StepResult::trial_given_up).
+// trial); stats[14] (when stats has 15 entries or more) = 1 when the trial gave up (on the budget,
+// on stalled negative-curvature moves or on the stall rule: StepResult::trial_given_up); with 17
+// entries, stats[15] = 1 when an unconverged step's residual is at its floor and stats[16] that
+// floor's noise (StepResult::at_floor, residual_noise); such a step, not a hard one, returns its
+// last iterate even with settings[20] (the caller fails naming the tolerance, or goes on from it).
 // settings[22] (optional): the contact's rows per node, 2 (n, t; the default) or 3 (n, t1, t2:
 // Coulomb's cone, StepProblem::contact_rows); with 3, contact = [tangentFree; mu; t2.u of
 // reference; r (3 per node, in/out)] and the table's column 5 holds t1.u of reference.
@@ -134,7 +137,8 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
     if (contact->N() != perNode * m)
       throw std::invalid_argument(rows == 3 ? "contact must hold tangentFree, mu, t2.u of reference and r: 6 values per node"
                                             : "contact must hold tangentFree, mu and r: 4 values per node");
-    if (stats->N() != 14 && stats->N() != 15) throw std::invalid_argument("stats must have 14 or 15 entries");
+    if (stats->N() != 14 && stats->N() != 15 && stats->N() != 17)
+      throw std::invalid_argument("stats must have 14, 15 or 17 entries");
     p.gap.resize(m);
     p.slip_reference.resize((rows - 1) * m);
     Eigen::VectorXd threshold(m);
@@ -154,7 +158,7 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
     if (T->N() != nodes) T->resize(nodes);
     for (long i = 0; i < nodes; ++i) (*T)[i] = temperature[i];
     for (long i = 0; i < rows * m; ++i) (*contact)[rStart + i] = r[i];
-    if (res.converged || !keepStartUnconverged) {
+    if (res.converged || res.at_floor || !keepStartUnconverged) {
       for (long i = 0; i < n; ++i) (*chi)[i] = x[i];
       if (u->N() != dofs) u->resize(dofs);
       for (long i = 0; i < dofs; ++i) (*u)[i] = displacement[i];
@@ -166,7 +170,8 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
                                res.residual, (double)res.curvature_steps, (double)res.saddle_steps,
                                (double)res.dense_steps, (double)res.reused_solves};
     for (int k = 0; k < 14; ++k) (*stats)[k] = values[k];
-    if (stats->N() == 15) (*stats)[14] = res.trial_given_up ? 1.0 : 0.0;
+    if (stats->N() >= 15) (*stats)[14] = res.trial_given_up ? 1.0 : 0.0;
+    if (stats->N() == 17) (*stats)[15] = res.at_floor ? 1.0 : 0.0, (*stats)[16] = res.residual_noise;
     StepFailure() = res.failure;
     return (long)res.iterations;
   });

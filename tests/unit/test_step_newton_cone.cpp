@@ -1,8 +1,10 @@
 // The step solver on Coulomb's cone (StepProblem::contact_rows 3, plugin/core/step_newton.hpp):
 // its linearisation of the contact against finite differences on a state where nodes stick, slide
 // with both tangential motions free (the direction turning with the slip) and slide along one
-// (the other blocked by a support); and a whole step on the cone whose nodes have one tangential
-// motion blocked equals the same step on the 2D layout (n, t).
+// (the other blocked by a support); a whole step on the cone whose nodes have one tangential
+// motion blocked equals the same step on the 2D layout (n, t); and a tolerance below the floor
+// the contact solves' own tolerances leave the residual stops the step at that floor, named as
+// such, not as a hard step for a shorter trial.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -194,6 +196,65 @@ TEST(StepNewtonCone, ConeWithOneTangentialMotionHeldIsThe2dLayout) {
     EXPECT_LE((uc - up).lpNorm<Eigen::Infinity>(), 1e-9 * up.lpNorm<Eigen::Infinity>());
     EXPECT_LE((Tc - Tp).lpNorm<Eigen::Infinity>(), 1e-9 * Tp.lpNorm<Eigen::Infinity>());
   }
+}
+
+// A step asked for a residual below what it can reach (-steptol 1e-15, at round-off; its contact
+// solves, PSOR and the slip threshold, to 1e-5 without the polish) stops at that floor: at_floor,
+// the noise the probe measured (the same fractions, the contact solved again from the step's
+// start) within floor_factor of the residual, and never a trial given up (a shorter step meets
+// the same floor: sleeve-3d -steptol 1e-11 crawled; tests/bad_inputs_test.py runs that scene).
+// The noise follows the contact's tolerance; a step stopped short of a tolerance above the floor
+// (one iteration) is a hard step, not a floor.
+TEST(StepNewtonCone, ToleranceBelowTheContactsFloorStopsThere) {
+  struct Outcome {
+    sma::StepResult result;
+    double residual = 0;
+  };
+  const auto step = [](unsigned seed, double contact_tol, double tol, int maxit) {
+    ConeBody body;
+    body.build(seed, 3);
+    sma::StepProblem p = body.problem(3, 0.3);
+    // (1 K below T0 = 210 K, where c(T) is small: the strains hold the points part-transformed, so the
+    // law's residual feels every change of the contact)
+    p.heat_rhs *= 209.0 / 250.0;
+    p.psor.tol = contact_tol;
+    p.psor.polish = 0;
+    p.slip_tol = contact_tol;
+    sma::StepSettings set;
+    set.tol = tol;
+    set.maxit = maxit;
+    set.product_budget = 100000;  // a trial: a hard step would be given up for a shorter one
+    Eigen::VectorXd chi = Eigen::VectorXd::Zero(body.points), r = Eigen::VectorXd::Zero(3 * body.m);
+    Eigen::VectorXd g = Eigen::VectorXd::Zero(body.m), T(body.points), u(body.dofs());
+    Outcome out;
+    out.result = sma::solve_fraction_step(p, set, chi, r, g, T, u);
+    out.residual = out.result.residual;
+    return out;
+  };
+  int floors = 0, hard = 0;
+  for (unsigned seed = 1; seed <= 20 && floors < 3; ++seed) {
+    const Outcome coarse = step(seed, 1e-5, 1e-15, 50);
+    if (coarse.result.converged) continue;  // (a state whose fractions the contact's noise does not reach)
+    ++floors;
+    EXPECT_TRUE(coarse.result.at_floor) << "seed " << seed << ": " << coarse.result.failure << ", residual "
+                                        << coarse.residual << ", noise " << coarse.result.residual_noise;
+    EXPECT_FALSE(coarse.result.trial_given_up) << "seed " << seed;
+    EXPECT_GT(coarse.result.residual_noise, 0.0);
+    EXPECT_LE(coarse.residual, sma::StepSettings{}.floor_factor * coarse.result.residual_noise);
+    // A thousand times tighter contact solves: a noise at least ten times lower.
+    const Outcome fine = step(seed, 1e-8, 1e-15, 50);
+    EXPECT_FALSE(fine.result.converged) << "seed " << seed;
+    EXPECT_LE(fine.result.residual_noise, 0.1 * coarse.result.residual_noise) << "seed " << seed;
+    // A tolerance far above the floor (1e-6) not reached in one iteration: a hard step, no floor.
+    const Outcome short_of = step(seed, 1e-5, 1e-6, 1);
+    if (!short_of.result.converged) {
+      ++hard;
+      EXPECT_FALSE(short_of.result.at_floor) << "seed " << seed << ": residual " << short_of.residual << ", noise "
+                                             << short_of.result.residual_noise;
+    }
+  }
+  EXPECT_GE(floors, 3) << "fewer than three states met the floor: the case tests nothing";
+  EXPECT_GE(hard, 1) << "no step stopped short of a tolerance above the floor: the other side is not tested";
 }
 
 }  // namespace
