@@ -27,8 +27,10 @@ model, which solves the same problem (issue 49, its first check).
    the moment's increments are equal to 1e-8 (a linear problem); the half section's clamping within
    1e-3 of the quarter's; at every increment the moment balance of the sleeve (its support on z = 0
    against the contact forces, 1e-9), the cone, complementarity and no penetration.
-6. Bending with friction (mu 0.2, 0.01 rad): nodes open and sliding, the same invariants, and a
-   moment above the frictionless one at the same angle, both resisting the rotation.
+6. Bending with friction (mu 0.2, 0.01 rad): nodes open and sliding, the same invariants, the
+   statuses decided with a margin (sealing nodes above 100 seal_tol of the largest reaction, open
+   ones off by 100 seal_tol of the interference), and a moment above the frictionless one at the
+   same angle, both resisting the rotation.
 7. The plane hypothesis (-ends held: both end faces held axially and insulated; -length 0.02, the
    solution does not depend on z): every layer's pressure equal to 1e-6; on the round pipe the
    pressure converges to the plane-strain closed form (Lame) at an order in [1.6, 2.4] for
@@ -228,6 +230,12 @@ def main():
                                    "open_mu": b1["nodes_open_final"], "sliding_mu": b1["nodes_sliding_final"]}
     check(b1["nodes_open_final"] > 0 and b1["nodes_sliding_final"] > 0,
           f"-mu 0.2 -bend 1e-2: nodes open ({b1['nodes_open_final']}) and sliding ({b1['nodes_sliding_final']})")
+    # The statuses decided by the load, not by the solvers: every sealing node presses with more
+    # than 100 seal_tol of the largest reaction, every open one stands off by more than 100
+    # seal_tol of the interference (a node at the threshold went either way between two solvers).
+    check(b1["margin_sealing"] >= 100 * b1["seal_tol"] and b1["margin_open"] >= 100 * b1["seal_tol"],
+          f"-mu 0.2 -bend 1e-2: the statuses' margins, sealing {b1['margin_sealing']:.2e} of the largest reaction and "
+          f"open {b1['margin_open']:.2e} of the interference, >= 100 x seal_tol {b1['seal_tol']:.0e}")
     check(b1["moment_final"] > f0["moment_final"] > 0,
           f"-bend 1e-2: the moment with friction {b1['moment_final'] / 1e3:.3f} kN m above the frictionless "
           f"{f0['moment_final'] / 1e3:.3f} kN m, both > 0 (against the rotation)")
