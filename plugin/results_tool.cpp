@@ -41,9 +41,8 @@ int main(int argc, char** argv) {
     return 1;
   }
   if (verb == "release" && argc == 4 && pid_ok) {
-    const std::string note = sma::files::incomplete_run_note(argv[2], pid);
+    const std::string note = sma::files::release_results_noted(argv[2], pid);
     if (!note.empty()) std::fprintf(stderr, "%s\n", note.c_str());
-    sma::files::release_results(argv[2], pid);
     return 0;
   }
   std::fprintf(stderr, "usage: sma-results claim DIR SCENE PID | complete DIR PID | release DIR PID | record PATH\n");

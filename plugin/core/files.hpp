@@ -683,6 +683,15 @@ inline void release_results(const std::string& dir, long pid) {
   }
 }
 
+// Removes pid's lock of `dir` (release_results) and returns the line an incomplete run then
+// leaves (incomplete_run_note, read before the lock goes): the one way a run ends, whether the
+// scene's process exits (the plugin's exit handler) or sma-results releases it for a launcher.
+inline std::string release_results_noted(const std::string& dir, long pid) {
+  std::string note = incomplete_run_note(dir, pid);
+  release_results(dir, pid);
+  return note;
+}
+
 // Whether the file `path` ends with `tail` (after trailing white space): a complete VTU file ends
 // with </VTKFile>, one cut short by a full disk does not.
 inline bool ends_with(const std::string& path, const std::string& tail) {

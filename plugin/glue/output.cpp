@@ -64,9 +64,8 @@ std::vector<std::string>& ClaimedFolders() {
 }
 void ReleaseClaimedFolders() {
   for (const auto& dir : ClaimedFolders()) {
-    const std::string note = sma::files::incomplete_run_note(dir, (long)getpid());
+    const std::string note = sma::files::release_results_noted(dir, (long)getpid());
     if (!note.empty()) std::fprintf(stderr, "%s\n", note.c_str());
-    sma::files::release_results(dir, (long)getpid());
   }
 }
 // The entries this process has recorded in a manifest (files.hpp record_result).

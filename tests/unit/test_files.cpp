@@ -313,7 +313,9 @@ TEST(Files, ARunThatDoesNotCompleteLeavesTheLastCompleteRunWhole) {
   write("history.csv", "run 2, cut short");
   const std::string note = files::incomplete_run_note(d, pid);
   EXPECT_NE(note.find(d + "/previous-run"), std::string::npos) << note;
-  files::release_results(d, pid);
+  EXPECT_EQ(files::release_results_noted(d, pid), note);  // the same line, and the lock gone
+  EXPECT_FALSE(fs::exists(fs::path(d) / files::results_lock));
+  EXPECT_EQ(files::incomplete_run_note(d, pid), "");
   // Run 3 is stopped too: run 2's partial files go, run 1 stays kept (not replaced by run 2's).
   ASSERT_EQ(files::claim_results(d, "sleeve-radial", pid), "");
   EXPECT_FALSE(fs::exists(d + "/history.csv"));
