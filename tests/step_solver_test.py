@@ -19,7 +19,8 @@ method (docs/parameters.md, "Step solver"):
   - a -steptol below the floor the contact solves leave (sleeve-3d, friction, 1e-11) fails at the
     first step that meets it, saying so and naming -steptol, where such steps were taken again
     shorter until their start met it (13936 steps to half the run); with -keepgoing 1 the run ends
-    with no step taken shorter and none handed to the nested loops;
+    with no step taken shorter and none handed to the nested loops; without contact (free-ring) the
+    floor is round-off's, 1e-14 fails there so;
   - a variant that replaces the law's LocalStep hook (edp/variants/sleeve-asymmetric-law.edp)
     runs the nested loops under -stepsolver auto, and -stepsolver newton there fails naming the
     hook; -stepsolver newton with -psormode full fails naming it; an unknown -stepsolver fails.
@@ -134,6 +135,12 @@ def main():
     words = ["step solver", "that residual is at its floor", "-psortol", "-steptol 1e-11", "raise -steptol to 1e-"]
     check(p.returncode == 1 and len(lines) == 1 and all(w in lines[0] for w in words),
           f"-steptol 1e-11 below the contact's floor fails at once, saying so: {(lines or [p.stderr[-300:]])[0]}")
+    # Without contact the floor is round-off's (1e-12): the free ring met -steptol 1e-13 and fell back to the
+    # nested loops at 1e-14, which then failed their own loop (-fpmaxit named)
+    _, p = run_scene_captured("free-ring", "step-solver-roundoff", "-phasemodel", "fraction", "-steptol", "1e-14")
+    lines = [line for line in (p.stdout + p.stderr).splitlines() if line.startswith("error:")]
+    check(p.returncode == 1 and len(lines) == 1 and "at round-off" in lines[0] and "raise -steptol to 1e-11" in lines[0],
+          f"free-ring -steptol 1e-14 stops at round-off, saying so: {(lines or [p.stderr[-300:]])[0]}")
     kept, p = run_scene_captured("sleeve-3d", "step-solver-floor-keepgoing", *floor_args, "-keepgoing", "1")
     check(p.returncode == 0, f"-keepgoing 1 at the floor runs to its end (exit {p.returncode}: {p.stderr[-300:]})")
     skept = json.load(open(os.path.join(kept, "summary.json")))

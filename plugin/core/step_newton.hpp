@@ -209,8 +209,11 @@ struct StepSettings {
   // residuals differ by the noise of the contact solves (their tolerances, -psortol and
   // -sliptol). A residual within floor_factor of that noise is the floor of the step's equations
   // as solved, not a hard step: a shorter step or the nested loops cannot meet a tolerance below
-  // it (StepResult::at_floor). 0: no such probe.
+  // it (StepResult::at_floor). 0: no such probe. Without contact (or below its noise) the floor is
+  // round-off's: a step that stops at a residual of at most roundoff_floor (fraction units) is at
+  // it too (free-ring -phasemodel fraction: -steptol 1e-13 met, 1e-14 stalls at 2.2e-14).
   double floor_factor = 10;
+  double roundoff_floor = 1e-12;
   std::FILE* trace = nullptr;  // one line per iteration there when set (the glue: SMA_STEP_TRACE=1)
 };
 
@@ -858,10 +861,12 @@ class StepSolver {
     stats_.converged = s.residual_norm <= set.tol;
     if (!stats_.converged && stats_.failure.empty())
       stats_.failure = std::to_string(stats_.iterations) + " iterations";
-    if (!stats_.converged && set.floor_factor > 0 && p_.contact && r_start.size()) {
-      const StepState probe = evaluate(s.chi, r_start, threshold_start);
-      stats_.residual_noise = (probe.residual - s.residual).lpNorm<Eigen::Infinity>();
-      stats_.at_floor = s.residual_norm <= set.floor_factor * stats_.residual_noise;
+    if (!stats_.converged && set.floor_factor > 0) {
+      if (p_.contact && r_start.size()) {
+        const StepState probe = evaluate(s.chi, r_start, threshold_start);
+        stats_.residual_noise = (probe.residual - s.residual).lpNorm<Eigen::Infinity>();
+      }
+      stats_.at_floor = s.residual_norm <= std::max(set.floor_factor * stats_.residual_noise, set.roundoff_floor);
       // (a shorter step meets the floor too: sleeve-3d -mu 0.2 -steptol 1e-11 took 13936 steps,
       // each cut until its start already met the tolerance, to t = 50 s of 100 in 275 s)
       if (stats_.at_floor) stats_.trial_given_up = false;

@@ -198,6 +198,13 @@ TEST(StepNewtonCone, ConeWithOneTangentialMotionHeldIsThe2dLayout) {
   }
 }
 
+// How many points are part-transformed (0 < |chi| < 1): where the law's residual is not exact.
+int partly_transformed_points(const Eigen::VectorXd& chi) {
+  int n = 0;
+  for (Eigen::Index e = 0; e < chi.size(); ++e) n += std::fabs(chi[e]) > 0 && std::fabs(chi[e]) < 1;
+  return n;
+}
+
 // A step asked for a residual below what it can reach (-steptol 1e-15, at round-off; its contact
 // solves, PSOR and the slip threshold, to 1e-5 without the polish) stops at that floor: at_floor,
 // the noise the probe measured (the same fractions, the contact solved again from the step's
@@ -255,6 +262,30 @@ TEST(StepNewtonCone, ToleranceBelowTheContactsFloorStopsThere) {
   }
   EXPECT_GE(floors, 3) << "fewer than three states met the floor: the case tests nothing";
   EXPECT_GE(hard, 1) << "no step stopped short of a tolerance above the floor: the other side is not tested";
+  // Without contact there is no noise to probe: the floor is round-off's (roundoff_floor, 1e-12):
+  // -steptol 1e-17 stops there, at_floor, not given up; -steptol 1e-10 is met.
+  for (const double tol : {1e-17, 1e-10}) {
+    ConeBody body;
+    body.build(1, 3);
+    sma::StepProblem p = body.problem(3, 0.3);
+    p.heat_rhs *= 209.0 / 250.0;
+    p.contact = nullptr;
+    sma::StepSettings set;
+    set.tol = tol;
+    set.product_budget = 100000;
+    Eigen::VectorXd chi = Eigen::VectorXd::Zero(body.points), r(0), g(0), T(body.points), u(body.dofs());
+    const sma::StepResult res = sma::solve_fraction_step(p, set, chi, r, g, T, u);
+    if (tol > 1e-12) {
+      EXPECT_TRUE(res.converged) << res.failure;
+      continue;
+    }
+    EXPECT_FALSE(res.converged);
+    EXPECT_TRUE(res.at_floor) << res.failure << ", residual " << res.residual;
+    EXPECT_FALSE(res.trial_given_up);
+    EXPECT_EQ(res.residual_noise, 0.0);
+    EXPECT_LE(res.residual, set.roundoff_floor);
+    EXPECT_GT(partly_transformed_points(chi), 0) << "no point part-transformed: the law's residual is exact";
+  }
 }
 
 }  // namespace
