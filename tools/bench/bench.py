@@ -37,6 +37,9 @@ summary.json with the headline figures) and docs/benchmarks.md with its PNGs in 
      (docs/benchmarks/elliptic-adaptation.md)                                 elliptic_adaptation.py
  12. the 3D sleeve's mechanics on ffddm over MPI, one level and GenEO: strong and weak scaling,
      iterations on more ranks (docs/benchmarks/ffddm-sleeve-3d.md)             ffddm_scaling.py
+ 13. sleeve-3d's clamping on Coulomb's cone: its cost against the round pipe's, and the time error of
+     its circumferential traction with and without the step control's watch
+     (docs/benchmarks/sleeve-3d-cone.md)                                       cone_3d.py
 The oracles (tools/bench/oracles: closed forms, the curve metric, the scheme in numpy, GetFEM) are
 independent of the code they check: they import nothing of python/sma.
 """
@@ -46,6 +49,7 @@ import sys
 import time
 
 import against_numpy
+import cone_3d
 import default_run
 import elliptic_adaptation
 import ffddm_scaling
@@ -69,7 +73,8 @@ ALONE = {"kernels": kernels.measure, "psor": psor.measure, "ring-lame": ring_lam
          "time-steps": lambda results: time_steps.write_doc(time_steps.measure(results)),
          "mesh-adaptation": lambda results: mesh_adaptation.write_doc(mesh_adaptation.measure(results, quick=QUICK)),
          "elliptic-adaptation": lambda results: elliptic_adaptation.write_doc(elliptic_adaptation.measure(results, quick=QUICK)),
-         "ffddm": lambda results: results.update(ffddm=ffddm_scaling.write_doc(ffddm_scaling.measure()))}
+         "ffddm": lambda results: results.update(ffddm=ffddm_scaling.write_doc(ffddm_scaling.measure())),
+         "cone-3d": lambda results: cone_3d.write_doc(cone_3d.measure(results))}
 
 
 def main():
@@ -107,6 +112,7 @@ def main():
     mesh_adaptation.write_doc(mesh_adaptation.measure(results, quick=QUICK), plt)
     elliptic_adaptation.write_doc(elliptic_adaptation.measure(results, quick=QUICK))
     ffddm_scaling.write_doc(ffddm_scaling.measure())
+    cone_3d.write_doc(cone_3d.measure(results))
 
     results["bench_wall_seconds"] = time.perf_counter() - bench_start
     write_json(os.path.join(OUT, "summary.json"), results)
