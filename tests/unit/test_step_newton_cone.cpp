@@ -205,11 +205,12 @@ int partly_transformed_points(const Eigen::VectorXd& chi) {
   return n;
 }
 
-// A step asked for a residual below what it can reach (-steptol 1e-15, at round-off; its contact
-// solves, PSOR and the slip threshold, to 1e-5 without the polish) stops at that floor: at_floor,
-// the noise the probe measured (the same fractions, the contact solved again from the step's
-// start) within floor_factor of the residual, and never a trial given up (a shorter step meets
-// the same floor: sleeve-3d -steptol 1e-11 crawled; tests/bad_inputs_test.py runs that scene).
+// A step asked for a residual below what it can reach (tol 1e-15, below round-off, which the
+// scripts refuse as -steptol; its contact solves, PSOR and the slip threshold, to 1e-5 without the
+// polish) stops at that floor: at_floor, the noise the probe measured (the same fractions, the
+// contact solved again from the step's start) within floor_factor of the residual, and never a
+// trial given up (a shorter step meets the same floor: sleeve-3d -steptol 1e-11 crawled;
+// tests/step_solver_test.py runs that scene).
 // The noise follows the contact's tolerance; a step stopped short of a tolerance above the floor
 // (one iteration) is a hard step, not a floor.
 TEST(StepNewtonCone, ToleranceBelowTheContactsFloorStopsThere) {
@@ -263,7 +264,7 @@ TEST(StepNewtonCone, ToleranceBelowTheContactsFloorStopsThere) {
   EXPECT_GE(floors, 3) << "fewer than three states met the floor: the case tests nothing";
   EXPECT_GE(hard, 1) << "no step stopped short of a tolerance above the floor: the other side is not tested";
   // Without contact there is no noise to probe: the floor is round-off's (roundoff_floor, 1e-12):
-  // -steptol 1e-17 stops there, at_floor, not given up; -steptol 1e-10 is met.
+  // tol 1e-17 stops there, at_floor, not given up; tol 1e-10 is met.
   for (const double tol : {1e-17, 1e-10}) {
     ConeBody body;
     body.build(1, 3);
