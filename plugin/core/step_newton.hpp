@@ -237,6 +237,7 @@ struct StepResult {
   // step (never a trial given up).
   double residual_noise = 0.0;
   bool at_floor = false;
+  bool floor_is_noise = false;  // the contact's noise set that floor (else round-off's, roundoff_floor)
 };
 
 // The state at one iterate chi: everything the step's equations give for it.
@@ -726,7 +727,7 @@ class StepSolver {
   // receive the final state's temperature and displacement.
   void solve(const StepSettings& set, Eigen::VectorXd& chi, Eigen::VectorXd& r, Eigen::VectorXd& threshold,
              Eigen::VectorXd& T, Eigen::VectorXd& u) {
-    const Eigen::VectorXd r_start = r, threshold_start = threshold;  // (the floor probe's contact start)
+    // (r and threshold keep the step's start until the end: the floor probe's contact start)
     StepState s = evaluate(chi, r, threshold);
     switch_variants(s);
     if (set.snap_trial && s.residual_norm > set.tol) snap_trial(s, set.tol);
@@ -862,11 +863,12 @@ class StepSolver {
     if (!stats_.converged && stats_.failure.empty())
       stats_.failure = std::to_string(stats_.iterations) + " iterations";
     if (!stats_.converged && set.floor_factor > 0) {
-      if (p_.contact && r_start.size()) {
-        const StepState probe = evaluate(s.chi, r_start, threshold_start);
+      if (p_.contact && r.size()) {
+        const StepState probe = evaluate(s.chi, r, threshold);
         stats_.residual_noise = (probe.residual - s.residual).lpNorm<Eigen::Infinity>();
       }
-      stats_.at_floor = s.residual_norm <= std::max(set.floor_factor * stats_.residual_noise, set.roundoff_floor);
+      stats_.floor_is_noise = s.residual_norm <= set.floor_factor * stats_.residual_noise;
+      stats_.at_floor = stats_.floor_is_noise || s.residual_norm <= set.roundoff_floor;
       // (a shorter step meets the floor too: sleeve-3d -mu 0.2 -steptol 1e-11 took 13936 steps,
       // each cut until its start already met the tolerance, to t = 50 s of 100 in 275 s)
       if (stats_.at_floor) stats_.trial_given_up = false;

@@ -177,7 +177,7 @@
 // the file that the launchers read before FreeFEM starts (tools/launcher-common.sh): FreeFEM
 // compiles a whole script before running any of it, so a plugin that lacks a function the scene
 // calls stops at compilation ("The Identifier ... does not exist") before plugin.idp's check runs.
-#define SMA_PLUGIN_VERSION 24
+#define SMA_PLUGIN_VERSION 25
 #define SMA_STRINGIFY(x) #x
 #define SMA_VERSION_STAMP(v) "sma-plugin-version " SMA_STRINGIFY(v) ";"
 extern "C" __attribute__((used, visibility("default")))

@@ -73,8 +73,9 @@ Eigen::VectorXd Segment(KN<double>* a, long start, long length, const char* what
 // settings[21] (optional): a trial's budget of products (StepSettings::product_budget; 0: not a
 // trial); stats[14] (when stats has 15 entries or more) = 1 when the trial gave up (on the budget,
 // on stalled negative-curvature moves or on the stall rule: StepResult::trial_given_up); with 17
-// entries, stats[15] = 1 when an unconverged step's residual is at its floor and stats[16] that
-// floor's noise (StepResult::at_floor, residual_noise); such a step, not a hard one, returns its
+// entries, stats[15] > 0 when an unconverged step's residual is at its floor, 1 the contact's noise
+// and 2 round-off's, and stats[16] that noise (StepResult::at_floor, floor_is_noise,
+// residual_noise); such a step, not a hard one, returns its
 // last iterate even with settings[20] (the caller fails naming the tolerance, or goes on from it).
 // settings[22] (optional): the contact's rows per node, 2 (n, t; the default) or 3 (n, t1, t2:
 // Coulomb's cone, StepProblem::contact_rows); with 3, contact = [tangentFree; mu; t2.u of
@@ -171,7 +172,7 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
                                (double)res.dense_steps, (double)res.reused_solves};
     for (int k = 0; k < 14; ++k) (*stats)[k] = values[k];
     if (stats->N() >= 15) (*stats)[14] = res.trial_given_up ? 1.0 : 0.0;
-    if (stats->N() == 17) (*stats)[15] = res.at_floor ? 1.0 : 0.0, (*stats)[16] = res.residual_noise;
+    if (stats->N() == 17) (*stats)[15] = res.at_floor ? (res.floor_is_noise ? 1.0 : 2.0) : 0.0, (*stats)[16] = res.residual_noise;
     StepFailure() = res.failure;
     return (long)res.iterations;
   });

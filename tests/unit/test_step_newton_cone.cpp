@@ -246,6 +246,7 @@ TEST(StepNewtonCone, ToleranceBelowTheContactsFloorStopsThere) {
     ++floors;
     EXPECT_TRUE(coarse.result.at_floor) << "seed " << seed << ": " << coarse.result.failure << ", residual "
                                         << coarse.residual << ", noise " << coarse.result.residual_noise;
+    EXPECT_TRUE(coarse.result.floor_is_noise) << "seed " << seed;
     EXPECT_FALSE(coarse.result.trial_given_up) << "seed " << seed;
     EXPECT_GT(coarse.result.residual_noise, 0.0);
     EXPECT_LE(coarse.residual, sma::StepSettings{}.floor_factor * coarse.result.residual_noise);
@@ -284,6 +285,7 @@ TEST(StepNewtonCone, ToleranceBelowTheContactsFloorStopsThere) {
     EXPECT_TRUE(res.at_floor) << res.failure << ", residual " << res.residual;
     EXPECT_FALSE(res.trial_given_up);
     EXPECT_EQ(res.residual_noise, 0.0);
+    EXPECT_FALSE(res.floor_is_noise);
     EXPECT_LE(res.residual, set.roundoff_floor);
     EXPECT_GT(partly_transformed_points(chi), 0) << "no point part-transformed: the law's residual is exact";
   }
