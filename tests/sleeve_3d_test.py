@@ -74,7 +74,7 @@ sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "tools", "bench", "oracles"))
 
 from checklib import check, finish, record, rows, run_scene, run_scene_captured, summary_of  # noqa: E402
-from curve_error import curve_error  # noqa: E402
+from curve_error import curve_error, interpolate  # noqa: E402
 
 COMMON = ["-quiet", "1"]
 
@@ -315,19 +315,13 @@ def main():
     # the filtered traction node by node (contact-final.csv's tangential_density, mid-length) against 2D's,
     # interpolated along its 91 nodes at the 3D nodes' angles: on one history it converges at P1's order
     profile2d = sorted((float(r["angle_deg"]), float(r["tangential_density"])) for r in nodes_fr)
-
-    def at_angle(a):
-        for (a0, t0), (a1, t1) in zip(profile2d, profile2d[1:]):
-            if a0 <= a <= a1:
-                return t0 + (t1 - t0) * (a - a0) / (a1 - a0) if a1 > a0 else t0
-        raise ValueError(f"angle {a} outside the 2D profile")
-
+    angles2d, densities2d = [a for a, _ in profile2d], [t for _, t in profile2d]
     misfit = []
     for nr, _ in meshes:
         mid = sorted((float(r["angle_deg"]), float(r["tangential_density"]))
                      for r in rows(os.path.join(fr[nr]["out"], "contact-final.csv")) if float(r["z"]) == 0)
         figures["plane_strain_elliptic_friction"][f"traction_density_mid_nr{nr}"] = mid
-        misfit.append(max(abs(t - at_angle(a)) for a, t in mid))
+        misfit.append(max(abs(t - interpolate(angles2d, densities2d, a)) for a, t in mid))
     figures["plane_strain_elliptic_friction"]["traction_density_2d"] = profile2d
     figures["plane_strain_elliptic_friction"]["traction_density_misfit"] = misfit
     largest2d = max(abs(t) for _, t in profile2d)
