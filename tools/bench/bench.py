@@ -40,6 +40,9 @@ summary.json with the headline figures) and docs/benchmarks.md with its PNGs in 
  13. sleeve-3d's clamping on Coulomb's cone: its cost against the round pipe's, and the time error of
      its circumferential traction with and without the step control's watch
      (docs/benchmarks/sleeve-3d-cone.md)                                       cone_3d.py
+ 14. sleeve-3d's plane hypothesis (-ends held) against the plane-strain closed form and the 2D
+     scenes, frictionless and with friction on one history (docs/benchmarks/sleeve-3d-plane.md)
+                                                                               plane_3d.py
 The oracles (tools/bench/oracles: closed forms, the curve metric, the scheme in numpy, GetFEM) are
 independent of the code they check: they import nothing of python/sma.
 """
@@ -55,6 +58,7 @@ import elliptic_adaptation
 import ffddm_scaling
 import kernels
 import mesh_adaptation
+import plane_3d
 import psor
 import pullout
 import report
@@ -74,7 +78,8 @@ ALONE = {"kernels": kernels.measure, "psor": psor.measure, "ring-lame": ring_lam
          "mesh-adaptation": lambda results: mesh_adaptation.write_doc(mesh_adaptation.measure(results, quick=QUICK)),
          "elliptic-adaptation": lambda results: elliptic_adaptation.write_doc(elliptic_adaptation.measure(results, quick=QUICK)),
          "ffddm": lambda results: results.update(ffddm=ffddm_scaling.write_doc(ffddm_scaling.measure())),
-         "cone-3d": lambda results: cone_3d.write_doc(cone_3d.measure(results))}
+         "cone-3d": lambda results: cone_3d.write_doc(cone_3d.measure(results)),
+         "plane-3d": lambda results: plane_3d.write_doc(plane_3d.measure(results))}
 
 
 def main():
@@ -113,6 +118,7 @@ def main():
     elliptic_adaptation.write_doc(elliptic_adaptation.measure(results, quick=QUICK))
     ffddm_scaling.write_doc(ffddm_scaling.measure())
     cone_3d.write_doc(cone_3d.measure(results))
+    plane_3d.write_doc(plane_3d.measure(results))
 
     results["bench_wall_seconds"] = time.perf_counter() - bench_start
     write_json(os.path.join(OUT, "summary.json"), results)

@@ -52,7 +52,9 @@ def write_doc(r, plt):
     w("The 3D sleeve's mechanics on FreeFEM's ffddm over MPI, strong and weak scaling, in the same run: "
       "[benchmarks/ffddm-sleeve-3d.md](benchmarks/ffddm-sleeve-3d.md). Its clamping on Coulomb's cone, cost and "
       "the circumferential traction's time error with and without the step control's watch: "
-      "[benchmarks/sleeve-3d-cone.md](benchmarks/sleeve-3d-cone.md).")
+      "[benchmarks/sleeve-3d-cone.md](benchmarks/sleeve-3d-cone.md). Its plane hypothesis (held ends) against the "
+      "plane-strain closed form and the 2D scenes, with friction on one history: "
+      "[benchmarks/sleeve-3d-plane.md](benchmarks/sleeve-3d-plane.md).")
     w("")
     w("## Goals")
     w("")
