@@ -124,6 +124,16 @@ untraced='
     for (i = 1; i <= n; i++) if (held[i] ~ /^ err code [01] ,/) clean = 1
     if (!clean) for (i = 1; i <= n; i++) print held[i] }'
 
+# The filter reads a line at a time: mawk, Debian's awk, fills its input buffer before it hands a
+# line on, so a run's progress lines (one every 5 s) reached the terminal in bursts, or all at the
+# run's end: a run that looked hung (tests/progress_test.py). -W interactive makes its reads
+# line-buffered; gawk reads what has come.
+if awk -W version 2>/dev/null | head -n 1 | grep -q mawk; then
+  line_awk="awk -W interactive"
+else
+  line_awk="awk"
+fi
+
 # run_filtered FIFO COMMAND...: COMMAND as a child this shell waits for, its standard input this
 # script's (an asynchronous command's would be /dev/null), its standard output through the filter
 # $untraced by way of the FIFO made at FIFO (so that $child is COMMAND itself). A TERM, INT or HUP
@@ -142,7 +152,7 @@ run_filtered() {
   shift
   mkfifo "$fifo"
   exec 4<>"$fifo"
-  env --ignore-signal=INT,TERM,HUP,QUIT awk "$untraced" < "$fifo" 4>&- &
+  env --ignore-signal=INT,TERM,HUP,QUIT $line_awk "$untraced" < "$fifo" 4>&- &
   filter=$!
   child=""
   stopped=""
