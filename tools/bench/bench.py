@@ -43,6 +43,8 @@ summary.json with the headline figures) and docs/benchmarks.md with its PNGs in 
  14. sleeve-3d's plane hypothesis (-ends held) against the plane-strain closed form and the 2D
      scenes, frictionless and with friction on one history (docs/benchmarks/sleeve-3d-plane.md)
                                                                                plane_3d.py
+ 15. the final tractions' time error with friction against the runs' bound (-timeestimate 1) and
+     Richardson's estimate (docs/benchmarks/traction-time-error.md)            traction_time.py
 The oracles (tools/bench/oracles: closed forms, the curve metric, the scheme in numpy, GetFEM) are
 independent of the code they check: they import nothing of python/sma.
 """
@@ -66,6 +68,7 @@ import ring_lame
 import scaling
 import study
 import time_steps
+import traction_time
 import work_precision
 from common import OUT, QUICK, machine, write_json
 
@@ -79,7 +82,8 @@ ALONE = {"kernels": kernels.measure, "psor": psor.measure, "ring-lame": ring_lam
          "elliptic-adaptation": lambda results: elliptic_adaptation.write_doc(elliptic_adaptation.measure(results, quick=QUICK)),
          "ffddm": lambda results: results.update(ffddm=ffddm_scaling.write_doc(ffddm_scaling.measure())),
          "cone-3d": lambda results: cone_3d.write_doc(cone_3d.measure(results)),
-         "plane-3d": lambda results: plane_3d.write_doc(plane_3d.measure(results))}
+         "plane-3d": lambda results: plane_3d.write_doc(plane_3d.measure(results)),
+         "traction-time": lambda results: traction_time.write_doc(traction_time.measure(results))}
 
 
 def main():
@@ -119,6 +123,7 @@ def main():
     ffddm_scaling.write_doc(ffddm_scaling.measure())
     cone_3d.write_doc(cone_3d.measure(results))
     plane_3d.write_doc(plane_3d.measure(results))
+    traction_time.write_doc(traction_time.measure(results))
 
     results["bench_wall_seconds"] = time.perf_counter() - bench_start
     write_json(os.path.join(OUT, "summary.json"), results)

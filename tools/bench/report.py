@@ -54,7 +54,9 @@ def write_doc(r, plt):
       "the circumferential traction's time error with and without the step control's watch: "
       "[benchmarks/sleeve-3d-cone.md](benchmarks/sleeve-3d-cone.md). Its plane hypothesis (held ends) against the "
       "plane-strain closed form and the 2D scenes, with friction on one history: "
-      "[benchmarks/sleeve-3d-plane.md](benchmarks/sleeve-3d-plane.md).")
+      "[benchmarks/sleeve-3d-plane.md](benchmarks/sleeve-3d-plane.md). The final tractions' time error with "
+      "friction against the runs' bound (`-timeestimate 1`): "
+      "[benchmarks/traction-time-error.md](benchmarks/traction-time-error.md).")
     w("")
     w("## Goals")
     w("")
