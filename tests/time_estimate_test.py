@@ -9,7 +9,8 @@
    below the bound, for the tangential density (friction's state, whose error the force curve's
    estimate does not see) and the pressure.
 3. sleeve-3d on Coulomb's cone (-mu 0.2 -pipeB 0.0504 -length 0.02): the bound of both traction
-   components likewise equals the two files' difference.
+   components likewise equals the two files' difference; sleeve-axisymmetric with friction along z
+   (-mu 0.2) likewise on its bore-final.csv (which gains tangential_density with friction).
 4. A run without -timeestimate leaves no companion of an earlier run in its folder.
 Writes results/checks/time_estimate.json.
 """
@@ -25,13 +26,13 @@ COARSE = ["-mesh", "meshes/sleeve-coarse.msh", "-quiet", "1"]
 CONE = ["-mu", "0.2", "-pipeB", "0.0504", "-length", "0.02", "-quiet", "1"]
 
 
-def column(out, name):
-    with open(os.path.join(out, "contact-final.csv")) as f:
+def column(out, name, file="contact-final.csv"):
+    with open(os.path.join(out, file)) as f:
         return [float(r[name]) for r in csv.DictReader(line for line in f if not line.startswith("#"))]
 
 
-def difference(a_out, b_out, name):
-    a, b = column(a_out, name), column(b_out, name)
+def difference(a_out, b_out, name, file="contact-final.csv"):
+    a, b = column(a_out, name, file), column(b_out, name, file)
     return max(abs(x - y) for x, y in zip(a, b)) / max(abs(x) for x in a)
 
 
@@ -66,6 +67,13 @@ def main():
         again = difference(out3, os.path.join(out3, "time-estimate"), name)
         check(abs(bound3[name] - again) <= 1e-9 * again, f"cone {name}: the bound {bound3[name]:.6e} = the files' "
               f"{again:.6e}")
+    outa = run("sleeve-axisymmetric", "axisymmetric", "-mu", "0.2", "-tol", "1e-3", "-timeestimate", "1", "-quiet", "1")
+    bounda = summary_of(outa)["time_error_bound"]
+    figures["axisymmetric"] = {"bound": bounda}
+    for name in ("pressure", "tangential_density"):
+        again = difference(outa, os.path.join(outa, "time-estimate"), name, "bore-final.csv")
+        check(abs(bounda[name] - again) <= 1e-9 * max(again, 1e-300), f"axisymmetric {name}: the bound {bounda[name]:.6e} = "
+              f"bore-final.csv's {again:.6e}")
     # 4. the same folder without the estimate: the earlier companion goes
     run("sleeve-3d", "cone", *CONE, "-tol", "1e-3")
     check(not os.path.exists(os.path.join(out3, "time-estimate")) and summary_of(out3)["time_error_bound"] is None,
