@@ -14,21 +14,19 @@
 4. A run without -timeestimate leaves no companion of an earlier run in its folder.
 Writes results/checks/time_estimate.json.
 """
-import csv
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from checklib import check, finish, record, run_scene_captured, summary_of  # noqa: E402
+from checklib import check, finish, record, rows, run_scene_captured, summary_of  # noqa: E402
 
 COARSE = ["-mesh", "meshes/sleeve-coarse.msh", "-quiet", "1"]
 CONE = ["-mu", "0.2", "-pipeB", "0.0504", "-length", "0.02", "-quiet", "1"]
 
 
 def column(out, name, file="contact-final.csv"):
-    with open(os.path.join(out, file)) as f:
-        return [float(r[name]) for r in csv.DictReader(line for line in f if not line.startswith("#"))]
+    return [float(r[name]) for r in rows(os.path.join(out, file))]
 
 
 def difference(a_out, b_out, name, file="contact-final.csv"):

@@ -16,11 +16,10 @@ section measured them.
 
 bench.py calls measure() and write_doc(); alone: tools/bench/bench.py --only traction-time.
 """
-import csv
 import math
 import os
 
-from common import OUT, ROOT, run, write_whole
+from common import OUT, ROOT, read_csv, run, write_whole
 from markdown_wrap import wrap
 
 DOC = os.path.join(ROOT, "docs", "benchmarks", "traction-time-error.md")
@@ -34,8 +33,7 @@ CASES = [("cone", "sleeve-3d", CONE, "3e-6", ["tangential_density_theta", "tange
 
 
 def column(out, name):
-    with open(os.path.join(out, "contact-final.csv")) as f:
-        return [float(r[name]) for r in csv.DictReader(line for line in f if not line.startswith("#"))]
+    return read_csv(os.path.join(out, "contact-final.csv"))[name]
 
 
 def difference(a, b):
