@@ -172,7 +172,10 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
                                (double)res.dense_steps, (double)res.reused_solves};
     for (int k = 0; k < 14; ++k) (*stats)[k] = values[k];
     if (stats->N() >= 15) (*stats)[14] = res.trial_given_up ? 1.0 : 0.0;
-    if (stats->N() == 17) (*stats)[15] = res.at_floor ? (res.floor_is_noise ? 1.0 : 2.0) : 0.0, (*stats)[16] = res.residual_noise;
+    if (stats->N() == 17) {
+      (*stats)[15] = res.at_floor ? (res.floor_is_noise ? 1.0 : 2.0) : 0.0;
+      (*stats)[16] = res.residual_noise;
+    }
     StepFailure() = res.failure;
     return (long)res.iterations;
   });
