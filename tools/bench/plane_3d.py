@@ -23,10 +23,9 @@ measured them.
 bench.py calls measure() and write_doc(); alone: tools/bench/bench.py --only plane-3d.
 """
 import csv
-import math
 import os
 
-from common import OUT, ROOT, run, write_whole
+from common import OUT, ROOT, observed_orders, run, write_whole
 from markdown_wrap import wrap
 from plane_section import density_misfit, towards_x, towards_y, weighted_pressure
 
@@ -57,8 +56,8 @@ def plane(scene, tag, *args):
 
 
 def orders(nrs, differences):
-    return [math.log(abs(d1 / d2)) / math.log(n2 / n1) if d2 != 0 else None
-            for (n1, d1), (n2, d2) in zip(zip(nrs, differences), zip(nrs[1:], differences[1:]))]
+    """common.observed_orders of the differences' sizes (they are signed)."""
+    return observed_orders(nrs, [abs(d) for d in differences])
 
 
 def section_pressures(rows):
