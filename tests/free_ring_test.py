@@ -112,9 +112,9 @@ def main():
         "dc_iterations_max": max(h["dc_iterations"]),
         "ring_phase_switches": switches, "wall_seconds": summary["wall_seconds"]})
 
-    # Rannacher start-up on a temperature jump.
-    jump = ["-latent", "0", "-Tinit", "196", "-Tlow", "300", "-Thigh", "300", "-tcool", "1e-6",
-            "-thold", "300", "-theat", "1e-6", "-dt", "20"]
+    # Rannacher start-up on a temperature jump (ramps of 0 s).
+    jump = ["-latent", "0", "-Tinit", "196", "-Tlow", "300", "-Thigh", "300", "-tcool", "0",
+            "-thold", "300", "-theat", "0", "-dt", "20"]
     result = {}
     for steps in (0, 2):
         _, hj = run(f"rannacher-{steps}", *jump, "-rannacher", str(steps))
