@@ -276,9 +276,9 @@ test: plugin meshes
 	  rm -rf build; fi
 	@mkdir -p build && cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > build/cmake.log 2>&1 || \
 	  { mkdir -p build; cmake -S . -B build -DCMAKE_BUILD_TYPE=Release; }
-	@echo "make test: building the C++ unit tests (GoogleTest: about 3 min the first time on 2 cores, then only what changed)"
+	@echo "make test: building the C++ unit tests (GoogleTest: about 1.5 min the first time on 2 cores, then only what changed)"
 	@cmake --build build -j$(CORES)
-	@echo "make test: running every test with ctest on $(CORES) cores (about 5 min on 2; each line is one test as it ends)"
+	@echo "make test: running every test with ctest on $(CORES) cores (about 7 min on 2; each line is one test as it ends)"
 	@cd build && ctest --output-on-failure -j$(CORES)
 
 # A parameter sweep (tools/sweep.py): each value of PARAM run in parallel (JOBS, at most the cores),
