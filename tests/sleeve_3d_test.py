@@ -27,7 +27,9 @@ model, which solves the same problem (issue 49, its first check).
    increments of 2.5e-4 rad: over its first four (to 1e-3 rad) no node opens and the moment's
    increments are equal to 1e-8 (a linear problem); the half section's clamping within 1e-3 of the
    quarter's; at every increment the moment balance of the sleeve (its support on z = 0 against the
-   contact forces, 1e-9), the cone, complementarity and no penetration.
+   contact forces, 1e-9), the cone, complementarity and no penetration. Run with -progressevery 0:
+   a progress line for each step of the clamping and each increment of the bending, in order, the
+   time left never negative and 0 at the last.
 6. Bending with friction (mu 0.2, 0.01 rad): nodes open and sliding, the same invariants, the
    statuses decided with a margin (sealing nodes above 100 seal_tol of the largest reaction, open
    ones off by 100 seal_tol of the interference), and a moment above the frictionless one at the
@@ -67,6 +69,7 @@ Writes results/checks/sleeve_3d.json.
 """
 import math
 import os
+import re
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -81,9 +84,16 @@ from plane_section import density_misfit, density_profile, towards_x, towards_y,
 COMMON = ["-quiet", "1"]
 
 
-def run(scene, tag, *args):
-    out = run_scene(scene, "sleeve-3d-" + tag, *COMMON, *args)
+def run(scene, tag, *args, progress=False):
+    """The scene's run; with progress, every progress line (-progressevery 0), its output kept."""
+    if progress:
+        out, done = run_scene_captured(scene, "sleeve-3d-" + tag, "-progressevery", "0", *args)
+        check(done.returncode == 0, f"{scene} {' '.join(args)}: exit {done.returncode}: {done.stderr[-300:]}")
+    else:
+        out = run_scene(scene, "sleeve-3d-" + tag, *COMMON, *args)
     run_ = {"summary": summary_of(out), "history": rows(os.path.join(out, "history.csv")), "out": out}
+    if progress:
+        run_["stdout"] = done.stdout
     if os.path.exists(os.path.join(out, "pullout.csv")):
         run_["pullout"] = rows(os.path.join(out, "pullout.csv"))
     return run_
@@ -209,7 +219,18 @@ def main():
     # increments: its first four (2.5e-4 rad each, to 1e-3) are a -bend 1e-3 -bendsteps 4 run's, byte
     # for byte; its end is 6.'s frictionless moment (frictionless contact: the state at an angle does
     # not depend on the increments that led there; 10 increments gave the same moment).
-    b0 = run("sleeve-3d", "bend0", "-bend", "1e-2", "-bendsteps", "40")
+    # With every progress line (-progressevery 0): one for each step of the clamping, then one for
+    # each increment of the bending, in order, the time left never negative and 0 at the last.
+    b0 = run("sleeve-3d", "bend0", "-bend", "1e-2", "-bendsteps", "40", progress=True)
+    lines = b0["stdout"].splitlines()
+    shown = [int(m.group(1)) for m in (re.match(r"sleeve-3d: step (\d+), t ", ln) for ln in lines) if m]
+    increments = [m for m in (re.match(r"sleeve-3d: bending increment (\d+)/40, about (\S+) s left$", ln) for ln in lines) if m]
+    left = [float(m.group(2)) for m in increments]
+    check(shown == list(range(1, b0["summary"]["n_steps"] + 1)),
+          f"-progressevery 0: a progress line for each of the {b0['summary']['n_steps']} steps, in order ({len(shown)} lines)")
+    check([int(m.group(1)) for m in increments] == list(range(1, 41)) and min(left) >= 0 and left[-1] == 0,
+          f"-progressevery 0: a line for each of the bending's 40 increments, in order ({len(increments)} lines), "
+          f"the time left >= 0 and 0 at the last ({left[-1] if left else None})")
     bend0 = [r for r in rows(os.path.join(b0["out"], "bend.csv")) if float(r["angle"]) <= 1e-3 * (1 + 1e-9)]
     steps = [float(r["moment"]) for r in bend0]
     d = [b - a for a, b in zip(steps, steps[1:])]
