@@ -11,7 +11,14 @@
 3. sleeve-3d on Coulomb's cone (-mu 0.2 -pipeB 0.0504 -length 0.02): the bound of both traction
    components likewise equals the two files' difference; sleeve-axisymmetric with friction along z
    (-mu 0.2) likewise on its bore-final.csv (which gains tangential_density with friction).
-4. A run without -timeestimate leaves no companion of an earlier run in its folder.
+4. The stage after the clamping: the companion makes it in a quarter of the increments, and the
+   bound of the stage's final values is the difference of the two curves' last rows over the run's
+   (recomputed here, 1e-9). sleeve-3d's frictional bending (-length 0.02 -mu 0.2 -bend 1e-2
+   -bendsteps 8): the final moment's bound is above its error against a run of 32 increments
+   (the clamping's part is 1e-10); the companion's curve has 2 rows. sleeve-axisymmetric's pull-out (-pullout 1e-3
+   -pullsteps 4, the run of 3.) likewise on pullout.csv. The bending's first sliding is bracketed
+   by its increment: summary.json's angle before it is bend.csv's row before (0: the clamped state).
+5. A run without -timeestimate leaves no companion of an earlier run in its folder.
 Writes results/checks/time_estimate.json.
 """
 import os
@@ -32,6 +39,22 @@ def column(out, name, file="contact-final.csv"):
 def difference(a_out, b_out, name, file="contact-final.csv"):
     a, b = column(a_out, name, file), column(b_out, name, file)
     return max(abs(x - y) for x, y in zip(a, b)) / max(abs(x) for x in a)
+
+
+def stage_bound(figures, what, out, bound, file, names, increments, companion_increments):
+    """The stage's bound: per column, the last rows' difference over the run's (1e-9), and the counts."""
+    stage = bound["stage"]
+    companion = os.path.join(out, "time-estimate")
+    figures[what] = {"stage": stage}
+    check(stage["increments"] == increments and stage["companion_increments"] == companion_increments
+          and len(rows(os.path.join(companion, file))) == companion_increments,
+          f"{what}: {stage['increments']} increments ({increments}), the companion's {stage['companion_increments']} "
+          f"({companion_increments}) = the rows of its {file}")
+    for name in names:
+        mine, theirs = column(out, name, file)[-1], column(companion, name, file)[-1]
+        again = abs(mine - theirs) / abs(mine)
+        check(abs(stage[name] - again) <= 1e-9 * again + 1e-15, f"{what} {name}: the bound {stage[name]:.6e} = the "
+              f"last rows' difference over the run's {again:.6e}")
 
 
 def run(scene, tag, *args):
@@ -65,14 +88,33 @@ def main():
         again = difference(out3, os.path.join(out3, "time-estimate"), name)
         check(abs(bound3[name] - again) <= 1e-9 * again, f"cone {name}: the bound {bound3[name]:.6e} = the files' "
               f"{again:.6e}")
-    outa = run("sleeve-axisymmetric", "axisymmetric", "-mu", "0.2", "-tol", "1e-3", "-timeestimate", "1", "-quiet", "1")
+    outa = run("sleeve-axisymmetric", "axisymmetric", "-mu", "0.2", "-pullout", "1e-3", "-pullsteps", "4", "-tol", "1e-3",
+               "-timeestimate", "1", "-quiet", "1")
     bounda = summary_of(outa)["time_error_bound"]
     figures["axisymmetric"] = {"bound": bounda}
     for name in ("pressure", "tangential_density"):
         again = difference(outa, os.path.join(outa, "time-estimate"), name, "bore-final.csv")
         check(abs(bounda[name] - again) <= 1e-9 * max(again, 1e-300), f"axisymmetric {name}: the bound {bounda[name]:.6e} = "
               f"bore-final.csv's {again:.6e}")
-    # 4. the same folder without the estimate: the earlier companion goes
+    # 4. the stages: the final values' bound is the two curves' last rows' difference
+    stage_bound(figures, "axisymmetric pull-out", outa, bounda, "pullout.csv", ("pullout_force", "normal_force_total"), 4, 1)
+    bend_args = ("-length", "0.02", "-mu", "0.2", "-bend", "1e-2", "-quiet", "1")
+    outb = run("sleeve-3d", "bend", *bend_args, "-bendsteps", "8", "-tol", "1e-3", "-timeestimate", "1")
+    refb = run("sleeve-3d", "bend-reference", *bend_args, "-bendsteps", "32")
+    boundb = summary_of(outb)["time_error_bound"]
+    stage_bound(figures, "bending", outb, boundb, "bend.csv", ("moment", "normal_force_total"), 8, 2)
+    moment, moment_ref = column(outb, "moment", "bend.csv")[-1], column(refb, "moment", "bend.csv")[-1]
+    actual = abs(moment - moment_ref) / abs(moment)
+    figures["bending"]["moment_error_against_32_increments"] = actual
+    check(0 < actual <= boundb["stage"]["moment"], f"bending: the final moment's error against 32 increments "
+          f"{actual:.3e} <= its bound {boundb['stage']['moment']:.3e}")
+    bent, angles = summary_of(outb)["bending"], column(outb, "angle", "bend.csv")
+    k = angles.index(bent["first_sliding_angle"])
+    check(bent["first_sliding_angle_before"] == (angles[k - 1] if k > 0 else 0)
+          and abs(bent["first_sliding_moment"] - column(outb, "moment", "bend.csv")[k]) <= 1e-9 * abs(bent["first_sliding_moment"]),
+          f"bending: the first sliding bracketed by its increment ({bent['first_sliding_angle_before']}, "
+          f"{bent['first_sliding_angle']}] rad, at {bent['first_sliding_moment']:.6g} N m (bend.csv row {k + 1})")
+    # 5. the same folder without the estimate: the earlier companion goes
     run("sleeve-3d", "cone", *CONE, "-tol", "1e-3")
     check(not os.path.exists(os.path.join(out3, "time-estimate")) and summary_of(out3)["time_error_bound"] is None,
           "a run without -timeestimate removes the earlier run's companion and reports no bound")
