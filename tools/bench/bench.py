@@ -45,6 +45,8 @@ summary.json with the headline figures) and docs/benchmarks.md with its PNGs in 
                                                                                plane_3d.py
  15. the final tractions' time error with friction against the runs' bound (-timeestimate 1) and
      Richardson's estimate (docs/benchmarks/traction-time-error.md)            traction_time.py
+ 16. the loads after the clamping (bending, pull-out): their increments' error, -timeestimate 1's
+     bound of it, their cost at the defaults (docs/benchmarks/stage-increments.md)  stages_3d.py
 The oracles (tools/bench/oracles: closed forms, the curve metric, the scheme in numpy, GetFEM) are
 independent of the code they check: they import nothing of python/sma.
 """
@@ -66,6 +68,7 @@ import pullout
 import report
 import ring_lame
 import scaling
+import stages_3d
 import study
 import time_steps
 import traction_time
@@ -83,7 +86,8 @@ ALONE = {"kernels": kernels.measure, "psor": psor.measure, "ring-lame": ring_lam
          "ffddm": lambda results: results.update(ffddm=ffddm_scaling.write_doc(ffddm_scaling.measure())),
          "cone-3d": lambda results: cone_3d.write_doc(cone_3d.measure(results)),
          "plane-3d": lambda results: plane_3d.write_doc(plane_3d.measure(results)),
-         "traction-time": lambda results: traction_time.write_doc(traction_time.measure(results))}
+         "traction-time": lambda results: traction_time.write_doc(traction_time.measure(results)),
+         "stages-3d": lambda results: stages_3d.write_doc(stages_3d.measure(results))}
 
 
 def main():
@@ -124,6 +128,7 @@ def main():
     cone_3d.write_doc(cone_3d.measure(results))
     plane_3d.write_doc(plane_3d.measure(results))
     traction_time.write_doc(traction_time.measure(results))
+    stages_3d.write_doc(stages_3d.measure(results))
 
     results["bench_wall_seconds"] = time.perf_counter() - bench_start
     write_json(os.path.join(OUT, "summary.json"), results)

@@ -56,7 +56,9 @@ def write_doc(r, plt):
       "plane-strain closed form and the 2D scenes, with friction on one history: "
       "[benchmarks/sleeve-3d-plane.md](benchmarks/sleeve-3d-plane.md). The final tractions' time error with "
       "friction against the runs' bound (`-timeestimate 1`): "
-      "[benchmarks/traction-time-error.md](benchmarks/traction-time-error.md).")
+      "[benchmarks/traction-time-error.md](benchmarks/traction-time-error.md). The loads after the clamping "
+      "(bending, pull-out): their increments' error, its bound and their cost: "
+      "[benchmarks/stage-increments.md](benchmarks/stage-increments.md).")
     w("")
     w("## Goals")
     w("")
