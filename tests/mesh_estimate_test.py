@@ -34,7 +34,12 @@ sleeve-radial at nr 40 (against their companions on 9 layers, 20 elements):
     from the three histories, and its effectivity against the -nr 16 run (whose own error is about a
     tenth of nr 4's: measured 0.04 % against 0.5 % over the transient, nr 16 against 32) in [0.5, 2]
     (measured 1.25 / 1.17; against nr 32: 1.16 / 1.06); -balance 1 -meshlevels 3 -tol 3e-3 from -nr 4
-    takes ceil(4 (mesh / time)^(1 / k)) elements and square cells.
+    takes ceil(4 (mesh / time)^(1 / k)) elements and square cells;
+  - a stage after the clamping (sleeve-3d -length 0.02 -mu 0.2 -bend 1e-2 -bendsteps 2 -nr 4 -nt 8
+    -meshestimate 1 -meshlevels 3): summary.json's mesh_error_estimate_stage per column of bend.csv
+    (moment, normal_force_total) is |v - v_H| / |v| / (2^k - 1) of the three runs' last rows, k the
+    order their differences' ratio gives in [0.25, 4] or 1 outside (the moment's differences do not
+    shrink there: order 1 taken, and said), recomputed here to 1e-9.
 Writes results/checks/mesh_estimate.json.
 """
 import math
@@ -43,7 +48,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from checklib import check, finish, record, run_scene_captured, summary_of  # noqa: E402
+from checklib import check, finish, record, rows, run_scene_captured, summary_of  # noqa: E402
 from curve_error import austenite_time, curve_error, l1_errors, read_history  # noqa: E402
 
 
@@ -72,6 +77,49 @@ def three_levels(out, n, n2, n3):
              (s["mesh_error_estimate"], again["l1"] / factor), (s["mesh_error_estimate_transient"], again["l1_transient"] / factor),
              (s["mesh_error_estimate_window"], again["l1_reversion"] / factor)]
     return ratio, k, max(abs(a / b - 1) for a, b in pairs)
+
+
+def order_of(ratio, n, n2, n3):
+    """The order k in [0.25, 4] whose ratio_of_differences is `ratio` (bisection), or None outside."""
+    lo, hi = 0.25, 4.0
+    if not ratio_of_differences(lo, n, n2, n3) <= ratio <= ratio_of_differences(hi, n, n2, n3):
+        return None
+    for _ in range(60):
+        mid = (lo + hi) / 2
+        lo, hi = (mid, hi) if ratio_of_differences(mid, n, n2, n3) < ratio else (lo, mid)
+    return (lo + hi) / 2
+
+
+def stage(data):
+    """The bending's final values' mesh estimate against the three runs' bend.csv."""
+    out, proc = run_scene_captured("sleeve-3d", "mesh-estimate-stage", "-quiet", "1", "-length", "0.02", "-mu", "0.2",
+                                   "-bend", "1e-2", "-bendsteps", "2", "-nr", "4", "-nt", "8", "-meshestimate", "1",
+                                   "-meshlevels", "3")
+    check(proc.returncode == 0, f"sleeve-3d -bend 1e-2 -meshestimate 1 -meshlevels 3 exit {proc.returncode} {proc.stderr[-300:]}")
+    if proc.returncode != 0:
+        return
+    s = summary_of(out)
+    estimate = s["mesh_error_estimate_stage"]
+    last = [rows(os.path.join(out, *p, "bend.csv"))[-1] for p in ((), ("mesh-estimate",), ("mesh-estimate", "mesh-estimate"))]
+    n, n2, n3 = s["mesh_estimate_layers"], s["mesh_estimate_coarse_layers"], s["mesh_estimate_coarsest_layers"]
+    worst, orders, taken = 0.0, {}, []
+    for name in ("moment", "normal_force_total"):
+        v, v2, v3 = (float(r[name]) for r in last)
+        k = order_of(abs(v2 - v3) / abs(v - v2), n, n2, n3)
+        if k is None:
+            k = 1.0
+            taken.append(name)
+        again = abs(v - v2) / abs(v) / ((n / n2) ** k - 1)
+        orders[name] = k
+        worst = max(worst, abs(estimate[name] / again - 1), abs(estimate[name + "_order"] / k - 1))
+    said = [name for name in orders if f"the bending's {name} shows no order" in proc.stdout]
+    data["stage"] = {"estimate": estimate, "orders": orders, "order_1_taken": taken}
+    check(estimate["name"] == "bending" and estimate["increments"] == 2 and (n, n2, n3) == (4, 2, 1) and worst < 1e-9
+          and said == taken,
+          f"the bending's final values' mesh estimate (4, 2, 1): moment {estimate['moment']:.3e} (order "
+          f"{orders['moment']:.3f}), normal force {estimate['normal_force_total']:.3e} (order "
+          f"{orders['normal_force_total']:.3f}), recomputed from the three bend.csv to {worst:.1e}; order 1 taken for "
+          f"{taken or 'none'}, said for {said or 'none'}")
 
 
 def balanced(scene, folder, lo, hi, *args):
@@ -248,6 +296,7 @@ def main():
               f"{' '.join(args)}: exit {proc.returncode}, {message[-1] if message else '(no error line)'}")
     both_directions(data)
     axisymmetric(data)
+    stage(data)
     # a ring of slivers or of too many cells is refused (after the scratch folder was made: none is left)
     before = {n for n in os.listdir("/tmp") if n.startswith("sma-sleeve-")}
     for args, word in ((["-layers", "2000", "-arcs", "1"], "quality"), (["-layers", "1500", "-arcs", "1500"], "cells")):
