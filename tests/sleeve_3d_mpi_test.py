@@ -13,6 +13,11 @@ so that every run takes the same instants):
   ranks with GenEO's coarse space, -ddmgeneo 1) it falls below 5e-7 (measured 1.5e-7), and by more
   than 10 times; GenEO's coarse space has some vectors and takes fewer GMRES iterations a solve
   than one level (measured 6.6 against 9.1);
+- the stages after the clamping on ranks (the cone's W from one distributed solve per contact row,
+  the plugin's PsorCone on it: distributed.idp DistributedConeStep): the runs above bend the
+  clamped joint (-bend 1e-2 -bendsteps 2, frictionless: the clamping unchanged); on 1 and 2 ranks
+  bend.csv is the sequential scene's (moment, normal force, to 1e-4 of the largest; open and
+  sliding nodes equal), with the cone and complementarity at every node;
 - the contact's columns S K^-1 S H': kept on 2 ranks (their product a global step), solved for on
   1 rank (-ddmcolumnsmb 0: a second solve a global step, about twice the solves), the same curves;
 - the solves: every one within 100 x -ddmtol of the scene's matrix (summary.json "distributed"
@@ -22,7 +27,7 @@ so that every run takes the same instants):
   equilibrium residual <= 1e-9; rank 0 alone prints the report (tools/ff-mpi);
 - refusals, once, alone and without a hang (no rank left running): an unknown option, named by the
   sequential first step; 2 ranks for 3 layers (a slab of at least 2 layers each), named by rank 0
-  (docs/errors.md's cases, run by bad_inputs_test, add -bend and 3 ranks for 2 layers); an ffddm
+  (docs/errors.md's cases, run by bad_inputs_test, add Coulomb's cone and 3 ranks for 2 layers); an ffddm
   option this run does not set (-ffddm_overlap 2), by every rank; each exits non-zero within 60 s;
 - a TERM to tools/ff-mpi mid-run stops every rank (exit 143, said once, no summary.json published);
   a solve at its iteration limit (-ffddm_max_it 1) stops every rank (MPI_Abort), said; every run's
@@ -53,6 +58,7 @@ SCRATCH = tempfile.mkdtemp(prefix="sma-mpi-test-")
 ENV = dict(os.environ, TMPDIR=SCRATCH)
 SMALL = ["-nr", "2", "-nt", "4", "-length", "0.04", "-tol", "0", "-steps", "100", "-quiet", "1"]
 TIGHT = ["-dctol", "1e-7", "-dcmaxit", "1000", "-fptol", "1e-11"]
+BEND = ["-bend", "1e-2", "-bendsteps", "2"]  # (the stage after the clamping: the cone's rows, frictionless)
 COLUMNS = ("pressure_mean", "T_inner_mean", "fraction_austenite")
 
 
@@ -94,12 +100,12 @@ def main():
     check(len(settings) == 2 and settings == scene_settings("edp/scenes/sleeve-3d.edp"),
           f"edp/mpi/sleeve-3d.edp sets the scene's name and defaults as edp/scenes/sleeve-3d.edp does: {settings}")
     out = os.path.join(TEST_RESULTS, "sleeve-3d-mpi")
-    seq = sequential(out + "-seq", *SMALL)
+    seq = sequential(out + "-seq", *SMALL, *BEND)
     runs = {}
     for ranks in (1, 2):
         # (1 rank without the contact's kept columns, -ddmcolumnsmb 0: a solve a global step instead)
         columns = ["-ddmcolumnsmb", "0"] if ranks == 1 else []
-        code, output, seconds, _ = ranks_run(ranks, f"{out}-np{ranks}", *SMALL, *columns)
+        code, output, seconds, _ = ranks_run(ranks, f"{out}-np{ranks}", *SMALL, *BEND, *columns)
         check(code == 0, f"{ranks} rank(s): exit {code} in {seconds:.1f} s")
         if code != 0:
             print(output[-3000:])
@@ -113,6 +119,19 @@ def main():
         check(differences[name] is not None and differences[name] <= 1e-4,
               f"MPI equality, {name} against {'the sequential nested loops' if 'vs' not in name else '1 rank'}: the "
               f"curves within {differences[name]} of their largest values (<= 1e-4; the loops' -dctol 1e-3)")
+    # The bending after the clamping (the same runs): 1 and 2 ranks against the sequential scene's
+    for ranks in (1, 2):
+        a, b = rows(os.path.join(seq, "bend.csv")), rows(os.path.join(runs[ranks], "bend.csv"))
+        worst = max(max(abs(float(x[c]) - float(y[c])) for x, y in zip(a, b)) / max(abs(float(x[c])) for x in a)
+                    for c in ("moment", "normal_force_total"))
+        same = len(a) == len(b) == 2 and all(x[c] == y[c] for x, y in zip(a, b) for c in ("nodes_open", "nodes_sliding"))
+        laws = summary_of(runs[ranks])["bending"]
+        differences[f"bending, {ranks} rank(s)"] = worst
+        check(same and worst <= 1e-4 and laws["cone_excess_max"] <= 1e-8 and laws["complementarity_max"] <= 1e-8
+              and laws["gap_min"] >= -1e-6,
+              f"the bending on {ranks} rank(s): bend.csv's moment and normal force within {worst:.1e} of the sequential "
+              f"scene's (<= 1e-4), open and sliding nodes equal: {same}; cone excess {laws['cone_excess_max']:.1e}, r gap "
+              f"{laws['complementarity_max']:.1e}, gap min {laws['gap_min']:.1e}")
     # The tight loops on 2 ranks with GenEO's coarse space (-ddmgeneo 1): the difference is the
     # loops' tolerance, and the two levels are at work.
     seq_tight = sequential(out + "-seq-tight", *SMALL, *TIGHT)

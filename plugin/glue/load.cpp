@@ -52,6 +52,9 @@
 //       one condensed contact global step (plugin/core/contact_step.hpp): the free motion of the
 //       contact rows, the PSOR on W (r warm start in/out), u = K^-1 (rhs + S H' r), by one forward
 //       and one backward solve; returns the sweep count.
+//   long PsorCone(real[int,int] W, real[] q, real[int,int] table, real[] [omega, tol, maxit, polish],
+//                 real[] r, real[] info)   the 3D contact problem (n, t1, t2 per node) on a given W;
+//       table one row per node [g] or [g, mu] (Coulomb's cone at once); returns the sweeps.
 //   long SpdConeStep(long handle, real[] rhs, real[int,int] table, real[] [omega, tol, maxit, polish],
 //                    real[] r, real[] u, real[] info)
 //       the same for a 3D contact problem (three rows per node (n, t1, t2), SpdDelassus with
@@ -177,7 +180,7 @@
 // the file that the launchers read before FreeFEM starts (tools/launcher-common.sh): FreeFEM
 // compiles a whole script before running any of it, so a plugin that lacks a function the scene
 // calls stops at compilation ("The Identifier ... does not exist") before plugin.idp's check runs.
-#define SMA_PLUGIN_VERSION 25
+#define SMA_PLUGIN_VERSION 26
 #define SMA_STRINGIFY(x) #x
 #define SMA_VERSION_STAMP(v) "sma-plugin-version " SMA_STRINGIFY(v) ";"
 extern "C" __attribute__((used, visibility("default")))

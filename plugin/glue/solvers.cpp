@@ -173,6 +173,42 @@ long SpdConeStep(long const& handle, KN<double>* const& rhs, KNM<double>* const&
   });
 }
 
+// The 3D contact problem on a Delassus operator W formed by the caller (psor_cone.hpp: the
+// distributed run forms W from ffddm's solves, edp/solvers/distributed.idp): W 3m x 3m, q its free
+// motion (3 rows per node: n, t1, t2), table one row per node [g] (Tresca's disk) or [g, mu]
+// (Coulomb's cone at once, g the radius to start from); settings = [omega, tol, maxit, polish];
+// r the warm start, in/out; info = [residual, converged]. Returns the sweeps.
+long PsorCone(KNM<double>* const& W, KN<double>* const& q, KNM<double>* const& table, KN<double>* const& settings,
+              KN<double>* const& r, KN<double>* const& info) {
+  return guarded("PsorCone", [&] {
+    const long n = q->N(), m = table->N();
+    if (n != 3 * m || W->N() != n || W->M() != n || r->N() != n)
+      throw std::invalid_argument("W (" + std::to_string(W->N()) + " x " + std::to_string(W->M()) + "), q (" +
+                                  std::to_string(n) + ") and r (" + std::to_string(r->N()) + ") need 3 rows per node of "
+                                  "the table (" + std::to_string(m) + " nodes)");
+    if (table->M() != 1 && table->M() != 2) throw std::invalid_argument("the table needs 1 column [g] or 2 [g, mu]");
+    if (settings->N() != 4) throw std::invalid_argument("settings must be [omega, tol, maxit, polish]");
+    if (info->N() != 2) throw std::invalid_argument("info must have 2 entries");
+    const bool coulomb = table->M() == 2;
+    Eigen::MatrixXd w(n, n);
+    for (long i = 0; i < n; ++i)
+      for (long j = 0; j < n; ++j) w(i, j) = (*W)(i, j);
+    Eigen::VectorXd g(m), mu(coulomb ? m : 0);
+    for (long i = 0; i < m; ++i) {
+      g[i] = (*table)(i, 0L);
+      if (coulomb) mu[i] = (*table)(i, 1L);
+    }
+    Eigen::Map<const Eigen::VectorXd> qv(&(*q)[0], n);
+    Eigen::VectorXd rv = Eigen::Map<const Eigen::VectorXd>(&(*r)[0], n);
+    const sma::PsorResult res = sma::psor_cone(w, qv, g, (*settings)[0], (*settings)[1], (int)(*settings)[2], rv,
+                                               (int)(*settings)[3], coulomb ? &mu : nullptr);
+    for (long i = 0; i < n; ++i) (*r)[i] = rv[i];
+    (*info)[0] = res.residual;
+    (*info)[1] = res.converged ? 1 : 0;
+    return (long)res.iterations;
+  });
+}
+
 // One condensed contact global step (plugin/core/contact_step.hpp) on the contact problem
 // SpdDelassus formed in slot `handle`; table: one row per node [vertex, nx, ny, gap, threshold g,
 // t.u previous] (contact.idp's contactTable); settings = [omega, tol, maxit, polish].
@@ -374,6 +410,7 @@ void AddSolverFunctions() {
   Global.Add("SpdContactStep", "(",
              new OneOperator8_<long, long, A, KNM<double>*, A, A, A, A, A>(SpdContactStep));
   Global.Add("SpdConeStep", "(", new OneOperator7_<long, long, A, KNM<double>*, A, A, A, A>(SpdConeStep));
+  Global.Add("PsorCone", "(", new OneOperator6_<long, KNM<double>*, A, KNM<double>*, A, A, A>(PsorCone));
   Global.Add("StepFractionRecord", "(",
              new OneOperator8_<long, A, Matrice_Creuse<double>*, Matrice_Creuse<double>*, A, A, A, A, A>(
                  StepFractionRecord));
