@@ -65,6 +65,10 @@ model, which solves the same problem (issue 49, its first check).
    is 2.'s cone); the step control watches the cone's tractions at every step (a sliding node's
    direction has a history of its own): the e_theta density at 34 deg at mid-length within 10 % of
    -tol 1e-4's and its largest within 2 % (without the watch: 34 % and 5.6 %).
+11. The scene's header quotes these runs' numbers as they come out (to the digits it prints; a
+   number left behind when the solvers moved fails here, as README's in readme_numbers_test): the
+   defaults' nodes and tetrahedra, the frictionless bending's moment and open nodes, the plane
+   hypothesis's mid-length pressure, the short cone's steps and largest tractions.
 Writes results/checks/sleeve_3d.json.
 """
 import math
@@ -404,6 +408,22 @@ def main():
           f"-mu 0.2 -pipeB 0.0504: the step control watches the cone's tractions ({se['step_contact_watched_steps']} of "
           f"{se['n_steps']} steps): the e_theta density at 34 deg, mid-length, {mid / 1e6:.4f} MPa against -tol 1e-4's "
           f"{mid_fine / 1e6:.4f} (within 10 %), its largest {theta / 1e6:.4f} against {theta_fine / 1e6:.4f} (within 2 %)")
+
+    # 11. the header's numbers are these runs'
+    header = " ".join(line.lstrip("/").strip() for line in open(os.path.join(HERE, "..", "edp", "scenes", "sleeve-3d.edp"))
+                      if line.startswith("//"))
+    header = " ".join(header.split())
+    defaults, f0 = solid[2]["summary"], b0["summary"]["bending"]
+    quoted = [f"{defaults['nodes']} nodes, {defaults['tetrahedra']} tetrahedra",
+              f"{f0['moment_final'] / 1e3:.2f} kN m frictionless ({f0['nodes_open_final']} of "
+              f"{b0['summary']['contact_nodes']} bore nodes open)",
+              f"{held['0.0505', 2]['final_pressure_mid'] / 1e6:.2f} MPa ring-averaged at mid-length",
+              f"-length 0.02 -nr 2 -nt 8: {se['n_steps']} steps", f"tractions up to {theta / 1e6:.2f} MPa around the section and "
+              f"{axial / 1e6:.1f} MPa along z (mu p {0.2 * pressure / 1e6:.1f} MPa)"]
+    missing = [q for q in quoted if q not in header]
+    figures["header_quoted"] = quoted
+    check(not missing, f"edp/scenes/sleeve-3d.edp's header quotes the runs' numbers: {len(quoted) - len(missing)} of "
+          f"{len(quoted)} found; not found: {missing}")
 
     # 4. bad input
     for args, culprit in ((["-nt", "1"], "-nt"), (["-pipeE", "2e11"], "-pipeE"), (["-plane", "stress"], "-plane"),
