@@ -85,6 +85,19 @@ def files_under(folder):
     return found
 
 
+def header_quotes(script, quoted, label=None):
+    """Checks that the header of `script` (its comment lines //, joined, white space collapsed: a
+    phrase may straddle two lines) holds every phrase of `quoted`, each formatted by the caller from
+    a run to the digits the header prints: a number typed once and left behind when the code moved
+    fails here (as README's in readme_numbers_test). Returns the phrases not found."""
+    with open(os.path.join(ROOT, script)) as f:
+        header = " ".join(" ".join(line.lstrip("/").split()) for line in f if line.startswith("//"))
+    missing = [q for q in quoted if q not in header]
+    check(not missing, f"{label or script}'s header quotes its runs' numbers: {len(quoted) - len(missing)} of "
+          f"{len(quoted)} found; not found: {missing}")
+    return missing
+
+
 def summary_of(out):
     """The summary.json a scene wrote to `out`, read as the plot tools read it (sma.results_io
     read_json): a key given twice, NaN or a value that is not an object is refused, naming the file

@@ -30,6 +30,9 @@ frictionless pipe), at the paper's scale (0.5 mm interference, a = 2625).
 4. Invariants on every run: no penetration (gap >= -1e-12 m), pressures >= 0, all austenite at the
    end, the discrete heat balance at round-off (1e-8); bad input fails naming the option (-length 0,
    -plane stress).
+5. The scene's header quotes its defaults' run (-tol 0, its fixed steps) as it comes out: the nodes,
+   the first contact's step and temperature, the free end's peak and its time, austenite's step
+   and temperature, the final pressures at mid-length and at the free end (checklib.header_quotes).
 Writes results/checks/sleeve_axisymmetric.json.
 """
 import json
@@ -43,7 +46,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
-from checklib import ROOT, check, finish, record, rows, run_scene  # noqa: E402
+from checklib import ROOT, check, finish, header_quotes, record, rows, run_scene  # noqa: E402
 
 sys.path.insert(0, os.path.join(ROOT, "python"))
 from sma.vtu import read_vtu  # noqa: E402
@@ -190,6 +193,20 @@ for tag, extra in (("away", ["-pullout", "1e-3", "-pulldirection", "away"]), ("s
 d1, d2 = abs(pull[2] - pull[4]), abs(pull[4] - pull[8])
 check(d2 < d1 / 2, f"pull-out force converges: {pull[2]:.7g}, {pull[4]:.7g}, {pull[8]:.7g} N "
       f"(differences {d1:.4g}, {d2:.4g}: order {math.log2(d1 / d2):.2f})")
+
+# ---- 5. The scene's header quotes its defaults' run (-tol 0: the step numbers it quotes are the
+# fixed steps') as it comes out, to the digits it prints ----
+out = run_scene("sleeve-axisymmetric", "sleeve-axisymmetric-defaults", "-scale", "paper", "-quiet", "1", "-tol", "0")
+s = json.load(open(os.path.join(out, "summary.json")))
+peak = max(rows(os.path.join(out, "history.csv")), key=lambda r: float(r["pressure_end"]))
+quoted = [f"nr 6 x nz 30 Union Jack cells, {s['nodes']} nodes",
+          f"touches it at step {s['first_contact_step']} (bore {s['T_inner_first_contact'] - 273.15:.1f} C)",
+          f"the free end's pressure peaks at {float(peak['pressure_end']) / 1e6:.0f} MPa (t = {float(peak['t']):.0f} s)",
+          f"austenite for good from step {s['austenite_step']} ({s['T_inner_austenite'] - 273.15:.1f} C)",
+          f"Final pressure at mid-length {s['final_pressure_mid'] / 1e6:.3f} MPa",
+          f"{s['final_pressure_end'] / 1e6:.3f} MPa at the free end"]
+data["header_quoted"] = quoted
+header_quotes("edp/scenes/sleeve-axisymmetric.edp", quoted)
 
 # ---- 4. Bad input ----
 for args, culprit in ((["-length", "0"], "-length"), (["-plane", "stress"], "-plane"),
