@@ -8,7 +8,7 @@ columns: the ring-averaged pressure per layer z in bore-*.csv), drawn by plot_sl
   bore-pressure.png      the ring-averaged contact pressure along the bore at the three instants
   bend.png               (-bend > 0) the moment the joint resists with (kN m) and the bore's nodes
                          open and sliding against the pipe's rotation (mrad); the first sliding
-                         and the first leak path marked
+                         and the first leak path marked, each shaded over the increment it lies in
   pullout.png            (-pullout > 0) the pull-out force against the pipe's displacement and
                          mu N, drawn by plot_sleeve-axisymmetric.py from the same pullout.csv columns
 Usage: tools/plot/plot_sleeve-3d.py results/sleeve-3d
@@ -42,7 +42,10 @@ def bend(outdir, summary):
     b = summary["bending"]
     for key, label, color in (("first_sliding", "first sliding", "C1"), ("leak_path", "leak path", "C3")):
         if b.get(key + "_angle") is not None:
-            left.axvline(b[key + "_angle"] * 1e3, color=color, ls="--", lw=0.8, label=label)
+            # the event is known to its increment: shaded from the increment before to it
+            if b.get(key + "_angle_before") is not None:
+                left.axvspan(b[key + "_angle_before"] * 1e3, b[key + "_angle"] * 1e3, color=color, alpha=0.15, lw=0)
+            left.axvline(b[key + "_angle"] * 1e3, color=color, ls="--", lw=0.8, label=f"{label} (within the shaded increment)")
     left.set_xlabel("pipe rotation (mrad)")
     left.set_ylabel("moment the joint resists with (kN m)")
     left.grid(alpha=0.3)
