@@ -7,13 +7,20 @@ when the model moved (README said 0.151 GPa for the steel shaft, the runs 0.150)
 Runs (paper scale, about 15 s in all): sleeve-circular at its defaults and with `-pipeE 2e11`,
 sleeve-radial at its defaults and with `-pipeE 2e11` (Lamé's compound pressure), sleeve-axisymmetric
 at its defaults and with `-mu 0.2 -pullout 1e-3`, sleeve-circular-gvar (its austenite time).
+
+The scenes' headers likewise (checklib.header_quotes; their step numbers are the fixed steps',
+-tol 0): sleeve-circular's four phases (the steps before contact, contact's step and temperature,
+the linear phase's steps, the reversion's onset, austenite's step and temperature, the final
+pressure) and its steel shaft (-pipeE 2.1e11: austenite's step and temperature, the final
+pressure); sleeve-radial's contact (temperature, time), Lamé's pressure, austenite's temperature
+and time, and -scale reduced's pressure and austenite temperature. Four more runs, about 2 s.
 Writes results/checks/readme_numbers.json.
 """
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checklib import ROOT, check, finish, record, run_scene_captured, summary_of  # noqa: E402
+from checklib import ROOT, check, finish, header_quotes, record, rows, run_scene_captured, summary_of  # noqa: E402
 
 sys.path.insert(0, os.path.join(ROOT, "tools", "docs"))
 from paper_scale_metrics import curve  # noqa: E402
@@ -23,6 +30,44 @@ def run(scene, name, *args):
     out, done = run_scene_captured(scene, "readme-" + name, "-quiet", "1", *args)
     check(done.returncode == 0, f"{scene} {' '.join(args)}: exit {done.returncode} {done.stdout[-300:]}")
     return out if done.returncode == 0 else None
+
+
+def celsius(kelvin):
+    return kelvin - 273.15
+
+
+def headers():
+    """The scene headers' numbers against their fixed-step runs (-tol 0); returns the phrases."""
+    phrases = {}
+    fixed = ["-tol", "0"]
+    circular = run("sleeve-circular", "header-circular", "-vtkevery", "0", *fixed)
+    steel = run("sleeve-circular", "header-circular-steel", "-vtkevery", "0", "-pipeE", "2.1e11", *fixed)
+    radial = run("sleeve-radial", "header-radial", *fixed)
+    reduced = run("sleeve-radial", "header-radial-reduced", "-scale", "reduced", *fixed)
+    if circular and steel:
+        s, t = summary_of(circular), summary_of(steel)
+        history = rows(os.path.join(circular, "history.csv"))
+        onset = next(r for r in history if float(r["fraction_austenite"]) > 0)  # (the reversion's first step)
+        contact = s["first_contact_step"]
+        phrases["sleeve-circular"] = [
+            f"zero ({contact - 1} steps, no contact yet); contact at step {contact} (inner "
+            f"{celsius(s['T_inner_first_contact']):.1f} C)", f"martensite ({int(onset['step']) - contact} steps",
+            f"from {celsius(float(onset['T_inner_mean'])):.1f} C the steep rise",
+            f"(step {s['austenite_step']}, {celsius(s['T_inner_austenite']):.1f} C): {s['final_pressure_mean'] / 1e9:.3f} GPa",
+            f"austenite for good at step {t['austenite_step']} ({celsius(t['T_inner_austenite']):.1f} C), final pressure "
+            f"{t['final_pressure_mean'] / 1e6:.3f} MPa"]
+        header_quotes("edp/scenes/sleeve-circular.edp", phrases["sleeve-circular"])
+    if radial and reduced:
+        s, r = summary_of(radial), summary_of(reduced)
+        t = {int(h["step"]): float(h["t"]) for h in rows(os.path.join(radial, "history.csv"))}
+        phrases["sleeve-radial"] = [
+            f"contact at {celsius(s['T_inner_first_contact']):.1f} C at the inner surface "
+            f"(t = {t[s['first_contact_step']]:.1f} s)",
+            f"{s['final_pressure_mean'] / 1e6:.2f} MPa, once the whole ring is austenite "
+            f"({celsius(s['T_inner_austenite']):.1f} C, t = {t[s['austenite_step']]:.0f} s)",
+            f"({r['final_pressure_mean'] / 1e6:.2f} MPa, austenite at {celsius(r['T_inner_austenite']):.1f} C)"]
+        header_quotes("edp/scenes/sleeve-radial.edp", phrases["sleeve-radial"])
+    return phrases
 
 
 def main():
@@ -61,6 +106,7 @@ def main():
     for what, phrases in quoted.items():
         for phrase in phrases:
             check(phrase in flat, f"README quotes the {what} run as the run gives it: '{phrase}'")
+    quoted["headers"] = headers()
     record("readme_numbers", quoted)
     finish()
 
