@@ -13,7 +13,9 @@ The scenes' headers likewise (checklib.header_quotes; their step numbers are the
 the linear phase's steps, the reversion's onset, austenite's step and temperature, the final
 pressure) and its steel shaft (-pipeE 2.1e11: austenite's step and temperature, the final
 pressure); sleeve-radial's contact (temperature, time), Lamé's pressure, austenite's temperature
-and time, and -scale reduced's pressure and austenite temperature. Four more runs, about 2 s.
+and time, and -scale reduced's pressure and austenite temperature; sleeve-elliptic's first contact,
+the major axis's peak and its fall by the minor axis's touch (the paper's loosening), the final
+level and the two axes. Five more runs, about 4 s.
 Writes results/checks/readme_numbers.json.
 """
 import os
@@ -67,6 +69,20 @@ def headers():
             f"({celsius(s['T_inner_austenite']):.1f} C, t = {t[s['austenite_step']]:.0f} s)",
             f"({r['final_pressure_mean'] / 1e6:.2f} MPa, austenite at {celsius(r['T_inner_austenite']):.1f} C)"]
         header_quotes("edp/scenes/sleeve-radial.edp", phrases["sleeve-radial"])
+    elliptic = run("sleeve-elliptic", "header-elliptic", "-vtkevery", "0", *fixed)
+    if elliptic:
+        s = summary_of(elliptic)
+        points = rows(os.path.join(elliptic, "points.csv"))
+        major = [float(p["pressure_y_axis_Pa"]) for p in points]
+        touch = next(i for i, p in enumerate(points) if float(p["pressure_x_axis_Pa"]) > 0)  # (the minor axis)
+        peak = max(major[:touch])
+        phrases["sleeve-elliptic"] = [
+            f"major (y) axis at step {s['first_contact_step']} (inner {celsius(s['T_inner_first_contact']):.1f} C)",
+            f"rises to {peak / 1e6:.1f} MPa and falls back to {major[touch] / 1e6:.1f} MPa (the paper's loosening, "
+            f"{100 * (1 - major[touch] / peak):.0f} %) by the time the minor axis touches (step {points[touch]['step']})",
+            f"final {s['final_pressure_mean'] / 1e9:.4f} GPa",
+            f"({major[-1] / 1e6:.1f} vs {float(points[-1]['pressure_x_axis_Pa']) / 1e6:.1f} MPa)"]
+        header_quotes("edp/scenes/sleeve-elliptic.edp", phrases["sleeve-elliptic"])
     return phrases
 
 
