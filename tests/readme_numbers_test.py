@@ -15,7 +15,8 @@ pressure) and its steel shaft (-pipeE 2.1e11: austenite's step and temperature, 
 pressure); sleeve-radial's contact (temperature, time), Lamé's pressure, austenite's temperature
 and time, and -scale reduced's pressure and austenite temperature; sleeve-elliptic's first contact,
 the major axis's peak and its fall by the minor axis's touch (the paper's loosening), the final
-level and the two axes. Five more runs, about 4 s.
+level and the two axes; sleeve-elliptic-friction's defaults (-tol 1e-3): its steps, non-uniformity
+and friction ratios. Six more runs, about 6 s.
 Writes results/checks/readme_numbers.json.
 """
 import os
@@ -83,6 +84,14 @@ def headers():
             f"final {s['final_pressure_mean'] / 1e9:.4f} GPa",
             f"({major[-1] / 1e6:.1f} vs {float(points[-1]['pressure_x_axis_Pa']) / 1e6:.1f} MPa)"]
         header_quotes("edp/scenes/sleeve-elliptic.edp", phrases["sleeve-elliptic"])
+    friction = run("sleeve-elliptic-friction", "header-elliptic-friction", "-vtkevery", "0")  # (its defaults: -tol 1e-3)
+    if friction:
+        s = summary_of(friction)
+        phrases["sleeve-elliptic-friction"] = [
+            f"tangential/normal {s['final_tangential_over_normal']:.3f} at most, {s['final_tangential_over_normal_total']:.3f} "
+            "in total", f"At the default -tol 1e-3: {s['n_steps']} steps, (max - min)/mean "
+            f"{100 * s['final_pressure_non_uniformity']:.3f} %"]
+        header_quotes("edp/scenes/sleeve-elliptic-friction.edp", phrases["sleeve-elliptic-friction"])
     return phrases
 
 
