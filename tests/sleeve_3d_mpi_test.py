@@ -14,7 +14,8 @@ so that every run takes the same instants):
   than 10 times; GenEO's coarse space has some vectors and takes fewer GMRES iterations a solve
   than one level (measured 6.6 against 9.1);
 - the stages after the clamping on ranks (the cone's W from one distributed solve per contact row,
-  the plugin's PsorCone on it: distributed.idp DistributedConeStep): the runs above bend the
+  the plugin's PsorCone on it: distributed.idp DistributedConeStep; the clamping's kept columns of
+  the rows both share taken again: its normal rows on 2 ranks, none on 1): the runs above bend the
   clamped joint (-bend 1e-2 -bendsteps 2, frictionless: the clamping unchanged); on 1 and 2 ranks
   bend.csv is the sequential scene's (moment, normal force, to 1e-4 of the largest; open and
   sliding nodes equal), with the cone and complementarity at every node;
@@ -127,6 +128,12 @@ def main():
         same = len(a) == len(b) == 2 and all(x[c] == y[c] for x, y in zip(a, b) for c in ("nodes_open", "nodes_sliding"))
         laws = summary_of(runs[ranks])["bending"]
         differences[f"bending, {ranks} rank(s)"] = worst
+        # the clamping's kept columns (its normal rows, frictionless) serve the stage's W again: on 2
+        # ranks, not on 1 (-ddmcolumnsmb 0 keeps none)
+        reused, bore = summary_of(runs[ranks])["distributed"]["contact_columns_reused"], int(a[0]["nodes_open"]) + int(
+            a[0]["nodes_pressing"])
+        check(reused == (bore if ranks == 2 else 0), f"{ranks} rank(s): {reused} of the stage's {3 * bore} columns taken "
+              f"from the clamping's kept ones ({bore if ranks == 2 else 0}: its normal rows when kept)")
         check(same and worst <= 1e-4 and laws["cone_excess_max"] <= 1e-8 and laws["complementarity_max"] <= 1e-8
               and laws["gap_min"] >= -1e-6,
               f"the bending on {ranks} rank(s): bend.csv's moment and normal force within {worst:.1e} of the sequential "
