@@ -16,7 +16,8 @@ pressure); sleeve-radial's contact (temperature, time), Lamé's pressure, austen
 and time, and -scale reduced's pressure and austenite temperature; sleeve-elliptic's first contact,
 the major axis's peak and its fall by the minor axis's touch (the paper's loosening), the final
 level and the two axes; sleeve-elliptic-friction's defaults (-tol 1e-3): its steps, non-uniformity
-and friction ratios. Six more runs, about 6 s.
+and friction ratios; sleeve-life's defaults: the free ring's temperatures and width, the storage
+margin, the clearance, the clamping and the service. Seven more runs, about 8 s.
 Writes results/checks/readme_numbers.json.
 """
 import os
@@ -92,6 +93,19 @@ def headers():
             "in total", f"At the default -tol 1e-3: {s['n_steps']} steps, (max - min)/mean "
             f"{100 * s['final_pressure_non_uniformity']:.3f} %"]
         header_quotes("edp/scenes/sleeve-elliptic-friction.edp", phrases["sleeve-elliptic-friction"])
+    life = run("sleeve-life", "header-life")  # (its defaults: fixed steps)
+    if life:
+        s = summary_of(life)
+        forward, reverse = s["T_forward_free"], s["T_reverse_free"]
+        phrases["sleeve-life"] = [
+            f"turns martensite at {forward:.2f} K ({celsius(forward):.1f} C) and back at {reverse:.2f} K "
+            f"({celsius(reverse):.1f} C): a width of {s['hysteresis_width_free']:.1f} K",
+            f"storage margin {s['storage_margin']:.1f} K; clearance at installation {s['installation_clearance'] * 1e6:.2f} um; "
+            f"on heating contact at {celsius(s['T_inner_first_contact']):.1f} C, all austenite from "
+            f"{celsius(s['T_inner_austenite']):.1f} C, clamping pressure {s['clamp_pressure'] / 1e6:.3f} MPa",
+            f"the inner surface reaches {celsius(s['service_T_inner_min']):.1f} C and the ring stays austenite: the pressure "
+            f"stays {s['service_pressure_min'] / 1e6:.3f} MPa", f"{s['n_steps']} steps, about"]
+        header_quotes("edp/scenes/sleeve-life.edp", phrases["sleeve-life"])
     return phrases
 
 
