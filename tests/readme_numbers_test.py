@@ -43,7 +43,8 @@ def celsius(kelvin):
 
 
 def headers():
-    """The scene headers' numbers against their fixed-step runs (-tol 0); returns the phrases."""
+    """The scene headers' numbers against the runs they describe (fixed steps, -tol 0, where they quote
+    step numbers; else the defaults); returns the phrases."""
     phrases = {}
     fixed = ["-tol", "0"]
     circular = run("sleeve-circular", "header-circular", "-vtkevery", "0", *fixed)
