@@ -19,7 +19,9 @@ sleeve-radial at nr 40 (against their companions on 9 layers, 20 elements):
     meshes/sleeve-aniso36.msh's (its force curve to 1e-9, the node count);
   - -balance 1 (sleeve-radial, sleeve-circular): the layers are the pilot's, ceil(nr0 mesh / time)
     from its two estimates over the transient (clamped), the run is on them and reports its own mesh
-    estimate, and no scratch folder is left in /tmp; -balance with -layers, and -layers 1, refused;
+    estimate, and no scratch folder is left in its TMPDIR (this test's own, not /tmp: the scenes
+    remove their scratch folders wherever TMPDIR puts them); -balance with -layers, and -layers 1,
+    refused;
   - both directions, -meshestimate 2 -meshlevels 3 (sleeve-elliptic, whose pressure varies around
     the ring, on -arcs 18: 18 x 18): the run is -mesh meshes/sleeve-aniso.msh's (18 x 18, force
     curves to 1e-9); its companions are 9 x 9 and 4 x 4; the order is the one for which
@@ -28,7 +30,7 @@ sleeve-radial at nr 40 (against their companions on 9 layers, 20 elements):
     takes ceil(18 (mesh / time)^(1 / k)) layers and as many arc segments, and reports its own
     estimate in both directions; -meshestimate 3, -meshlevels 4, -balance 2 with -arcs, and
     sleeve-radial's -balance 2 refused; a remade ring of slivers (-layers 2000 -arcs 1) or of more
-    than 2e6 cells refused as a generated mesh is, its scratch folder of /tmp removed at exit;
+    than 2e6 cells refused as a generated mesh is, its scratch folder removed at exit;
   - sleeve-axisymmetric (the (r, z) mesh, -nr and its square cells halved together) at -nr 4,
     -meshestimate 1 -meshlevels 3 (companions at 2 and 1): the estimates and the order recomputed
     from the three histories, and its effectivity against the -nr 16 run (whose own error is about a
@@ -42,9 +44,12 @@ sleeve-radial at nr 40 (against their companions on 9 layers, 20 elements):
     shrink there: order 1 taken, and said), recomputed here to 1e-9.
 Writes results/checks/mesh_estimate.json.
 """
+import atexit
 import math
 import os
+import shutil
 import sys
+import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
@@ -208,6 +213,19 @@ def both_directions(data):
           f"{s['mesh_error_estimate_transient']:.2e}, time {s['time_error_estimate_transient']:.2e}")
 
 
+# The runs' temporary folders go under this test's own TMPDIR (the plugin's TemporaryDirectory
+# follows it), so that the checks that none is left see this test's runs only: in /tmp a sleeve-3d
+# run of a test beside it, its mesh's scratch folder still in use, read as one left behind.
+SCRATCH = tempfile.mkdtemp(prefix="sma-mesh-estimate-test-")
+os.environ["TMPDIR"] = SCRATCH
+atexit.register(shutil.rmtree, SCRATCH, True)
+
+
+def scratch_folders():
+    """The scenes' scratch folders now in this test's TMPDIR."""
+    return {n for n in os.listdir(SCRATCH) if n.startswith("sma-sleeve-")}
+
+
 def main():
     data = {}
     ref, proc = run_scene_captured("sleeve-radial", "mesh-estimate-reference", "-quiet", "1", "-nr", "640", "-tend", "80",
@@ -269,9 +287,8 @@ def main():
     else:
         check(False, f"-layers 36 / -mesh sleeve-aniso36 exit {pa.returncode} / {pb.returncode} {pa.stdout[-300:]}")
     # -balance 1: the layers from the pilot's two estimates, C / nr set to the time error; the run then
-    # reports its own mesh error; its scratch folder of /tmp is gone
-    scratch = lambda: {n for n in os.listdir("/tmp") if n.startswith("sma-sleeve-")}  # noqa: E731
-    before = scratch()
+    # reports its own mesh error; its scratch folder is gone
+    before = scratch_folders()
     for scene, extra, nodes in (("sleeve-radial", [], lambda n: n + 1),
                                 ("sleeve-circular", ["-vtkevery", "0"], lambda n: (n + 1) * 19)):
         s, layers = balanced(scene, f"mesh-estimate-balance-{scene}", 4, 20000 if scene == "sleeve-radial" else 400,
@@ -287,8 +304,8 @@ def main():
               f"mesh {b['pilot_mesh_error_estimate_transient']:.2e} over the transient) gives {b['layers']} layers "
               f"({s['nodes']} nodes); the run's own mesh estimate {s['mesh_error_estimate_transient']:.2e}, time "
               f"{s['time_error_estimate_transient']:.2e}")
-    left = scratch() - before
-    check(not left, f"-balance 1 leaves no scratch folder in /tmp (left: {sorted(left) or 'none'})")
+    left = scratch_folders() - before
+    check(not left, f"-balance 1 leaves no scratch folder in TMPDIR (left: {sorted(left) or 'none'})")
     for args, word in ((["-balance", "1", "-layers", "36"], "-balance 1"), (["-layers", "1"], "-layers 1")):
         _, proc = run_scene_captured("sleeve-circular", "mesh-estimate-refused", "-quiet", "1", *args)
         message = [l for l in (proc.stdout + proc.stderr).splitlines() if l.startswith("error:")]
@@ -298,11 +315,11 @@ def main():
     axisymmetric(data)
     stage(data)
     # a ring of slivers or of too many cells is refused (after the scratch folder was made: none is left)
-    before = {n for n in os.listdir("/tmp") if n.startswith("sma-sleeve-")}
+    before = scratch_folders()
     for args, word in ((["-layers", "2000", "-arcs", "1"], "quality"), (["-layers", "1500", "-arcs", "1500"], "cells")):
         _, proc = run_scene_captured("sleeve-elliptic", "mesh-estimate-refused", "-quiet", "1", *args)
         message = [l for l in (proc.stdout + proc.stderr).splitlines() if l.startswith("error:")]
-        left = {n for n in os.listdir("/tmp") if n.startswith("sma-sleeve-")} - before
+        left = scratch_folders() - before
         check(proc.returncode == 1 and message and word in message[-1] and not left,
               f"sleeve-elliptic {' '.join(args)}: exit {proc.returncode}, scratch folders left {sorted(left) or 'none'}, "
               f"{message[-1][:160] if message else '(no error line)'}")
