@@ -27,7 +27,12 @@ residual) is taken again shorter, not by the nested loops: exit 0, steps_retried
 one trial given up on stalled curvature moves, step_fallbacks 0, the products of the solves not
 converged summing to summary.json's step_products_retried and those of all solves to its
 step_products, no accepted step above the budget, and the final pressure the 1500-step run's to
-1e-6.
+1e-6; its runs of failed solves shorten the steps less than a quarter of the limit (1024) at which
+tries stop being trials.
+sleeve-elliptic-friction with the nested loops and -slipmaxit 20 (its slip-threshold loop fails at
+every step length): exit 1 within 100 steps of its run of failures, one error line naming the loop
+and the shortening, in [1024, 4096) and equal to the lengths it quotes (before: the steps shrank to
+the shortest and the run crawled).
 Runs into build/test-results/time-steps-*/; writes results/checks/time_steps.json.
 """
 import os
@@ -36,8 +41,13 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from checklib import check, finish, record, rows, run_scene_captured, summary_of  # noqa: E402
+from checklib import ROOT, check, finish, record, rows, run_scene_captured, summary_of  # noqa: E402
 from curve_error import curve_error  # noqa: E402
+
+
+# the shortening of a run of failed solves at which tries stop being trials, as the scripts set it
+with open(os.path.join(ROOT, "edp/problems/sleeve/step-control.idp")) as f:
+    LIMIT = int(re.search(r"^real stepFailureShorteningLimit = (\d+);", f.read(), re.M)[1])
 
 
 def run(scene, name, *args):
@@ -162,6 +172,30 @@ def main():
         check(abs(s["final_pressure_mean"] / fixed["final_pressure_mean"] - 1) < 1e-6,
               f"sleeve-elliptic -tol 1e-3: final pressure {s['final_pressure_mean']:.6e} against the fixed "
               f"steps' {fixed['final_pressure_mean']:.6e}")
+        # The run of failures its retries made stays well below the limit where tries stop being trials.
+        check(1 < s["step_failure_shortening_max"] < LIMIT / 4,
+              f"sleeve-elliptic -tol 1e-3: its failures shortened the steps {s['step_failure_shortening_max']:g} times "
+              f"at most below their reference (want in (1, {LIMIT // 4}): at {LIMIT} no try is a trial)")
+        data["elliptic_budget"]["step_failure_shortening_max"] = s["step_failure_shortening_max"]
+    # A loop that fails at every step length stops the run, not shorter and shorter steps.
+    out, proc = run("sleeve-elliptic-friction", "slip-fails", "-stepsolver", "fixedpoint",
+                    "-mesh", "meshes/sleeve-coarse.msh", "-slipmaxit", "20", "-vtkevery", "0")
+    errors = [line for line in (proc.stdout + proc.stderr).splitlines() if line.startswith("error:")]
+    m = re.search(r"^error: time step (\d+) \(shorter steps do not help: since step (\d+) \(t = \S+ s, (\S+) s long\) "
+                  r"its failures have shortened the steps (\d+) times, to (\S+) s, and it still fails\): "
+                  r"slip-threshold fixed point \(Coulomb\) did not converge: 20 iterations", errors[0] if errors else "")
+    check(proc.returncode == 1 and len(errors) == 1 and m is not None,
+          f"sleeve-elliptic-friction -stepsolver fixedpoint -slipmaxit 20: exit {proc.returncode} (want 1), one "
+          f"error line naming the run of failures and the loop: {errors}")
+    if m:
+        step, since, reference, times, shortest = int(m[1]), int(m[2]), float(m[3]), int(m[4]), float(m[5])
+        data["slip_fails"] = {"step": step, "since": since, "reference_s": reference, "shortening": times,
+                              "shortest_s": shortest}
+        # the tries go down by quarters: the one that reached the limit is at most 4 times below it; and
+        # the run stops within a few steps of it (before: 36 707 steps at -slipmaxit 5, a crawl)
+        check(LIMIT <= times < 4 * LIMIT and abs(reference / shortest / times - 1) < 1e-3 and since < step < since + 100,
+              f"-slipmaxit 20: stopped at step {step}, {step - since} steps after its run of failures began, the "
+              f"steps shortened {times} times ({reference:g} s / {shortest:g} s), want in [{LIMIT}, {4 * LIMIT})")
     record("time_steps", data)
     finish()
 
