@@ -21,7 +21,8 @@ statements that the fit found them to agree with (section 4; docs/paper-scale.md
     first contact (a zero-force stage everywhere), while the soft spring on the top lets the near
     side touch at step 1;
   - S9, sleeve-random-threshold (Fig. 34): the reversion starts within 2.5 K of the paper's -25 C.
-And the reduced scale is a preset: -scale reduced gives back the printed a = 300 and the meshes'
+The headers of sleeve-circular-gvar and sleeve-random-threshold quote these runs' numbers as
+printed (checklib.header_quotes). And the reduced scale is a preset: -scale reduced gives back the printed a = 300 and the meshes'
 55 um interference. Records results/checks/paper_scale.json.
 """
 import os
@@ -30,8 +31,8 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools", "bench", "oracles"))
 
-from checklib import (KELVIN_AT_0C, check, finish, four_phases, r_squared, record, run_scene,  # noqa: E402
-                      sleeve_geometry, sleeve_outputs)
+from checklib import (KELVIN_AT_0C, check, finish, four_phases, header_quotes, r_squared, record,  # noqa: E402
+                      run_scene, sleeve_geometry, sleeve_outputs)
 from lame import lame_pressure  # noqa: E402
 
 # The default scale, stated so that run_scene does not pin the reduced scale, and the paper's fixed
@@ -89,6 +90,24 @@ def main():
     check(abs(fg / final - 1) <= 1e-3 and figures["gvar"]["all_austenite_step"] < figures["circular"]["all_austenite_step"],
           f"S4b: variable g ends at the same level ({fg / final - 1:+.1e}) and earlier: austenite for good at step "
           f"{figures['gvar']['all_austenite_step']} against {figures['circular']['all_austenite_step']}")
+
+    # The scene's header quotes this run (and the circular one) as printed.
+    def C(kelvin):
+        return kelvin - KELVIN_AT_0C
+    gs, cs = gvar["summary"], circ["summary"]
+    counts = [int(r["contact_nodes"]) for r in hist]
+    flips = [i for i in range(contact + 1, len(hist)) if counts[i] != counts[i - 1]]
+    flip_counts = sorted(set(counts[contact:flips[-1] + 1])) if flips else [0]
+
+    def t_final(run):  # the time of the first step all austenite
+        return float(run["history"][run["summary"]["austenite_step"] - 1]["t"])
+    header_quotes("edp/scenes/sleeve-circular-gvar.edp", [
+        f"contact at step {gs['first_contact_step']} (inner {C(gs['T_inner_first_contact']):.1f} C",
+        f"warmer than sleeve-circular's {C(cs['T_inner_first_contact']):.1f} C",
+        f"from {float(hist[flips[0]]['t']) if flips else 0:.1f} s to {float(hist[flips[-1]]['t']) if flips else 0:.1f} s "
+        f"the contact set flips between every other bore node ({flip_counts[0]}) and all {flip_counts[-1]}",
+        f"from {C(T[onset]):.1f} C", f"reached earlier ({t_final(gvar):.1f} s instead of {t_final(circ):.1f} s, at inner "
+        f"{C(gs['T_inner_austenite']):.1f} C), the same {fg / 1e9:.3f} GPa", f"(R^2 {r2:.2f} of the mean pressure)"])
 
     ell = sleeve_outputs(run_scene("sleeve-elliptic", "paper-elliptic", *PAPER, "-quiet", "1", "-vtkevery", "0"))
     _, p_minor = point_curve(ell, "x_axis")
@@ -152,6 +171,11 @@ def main():
     onset_C = float(onset["T_inner_mean"]) - KELVIN_AT_0C
     check(abs(onset_C - (-25.0)) <= 2.5, f"S9: the random threshold's reversion starts at {onset_C:.1f} C (paper: -25 C)")
     figures["random"] = {"reversion_onset_C": onset_C, "seed": rnd["summary"].get("seed")}
+    header_quotes("edp/scenes/sleeve-random-threshold.edp", [
+        f"phase change from {onset_C:.1f} C (paper: -25 C)",
+        f"(austenite for good at {rnd['summary']['T_inner_austenite'] - KELVIN_AT_0C:.1f} C instead of "
+        f"{s['T_inner_austenite'] - KELVIN_AT_0C:.1f} C)",
+        f"sleeve-circular ({rnd['summary']['final_pressure_mean'] / 1e9:.3f} GPa, all austenite)"])
 
     red = sleeve_outputs(run_scene("sleeve-circular", "paper-reduced", "-scale", "reduced", "-quiet", "1",
                                    "-vtkevery", "0", "-steps", "150"))["summary"]["parameters"]
