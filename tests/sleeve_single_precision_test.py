@@ -8,14 +8,18 @@ symmetry: the three forces must differ by more than 1 % at some step. Also recor
 spread at the end, and how far the phase fractions of the two runs differ (the phase zones).
 Stability (docs/stability.md, case 4): both runs end all austenite, and the final mean pressures
 agree within the bound the rounding allows (2^-24 x outer radius / interference, 6.6e-5).
+The scene's header quotes its defaults' runs (paper scale and -scale reduced, the fixed steps of
+-tol 0) as printed: the spread at the first contact step and at the end, and the double precision
+mesh's (sleeve-circular) to its order of magnitude. Three more runs, about 4 s.
 Writes results/checks/sleeve_single_precision.json.
 """
+import math
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from checklib import check, finish, record, run_scene, sleeve_outputs  # noqa: E402
+from checklib import check, finish, header_quotes, record, run_scene, sleeve_outputs  # noqa: E402
 
 POINTS = ("x_axis", "diagonal", "y_axis")
 COMMON = ["-mesh", "meshes/sleeve-coarse.msh", "-steps", "600", "-quiet", "1"]
@@ -29,6 +33,35 @@ def spreads(points):
         if max(p) > 0:
             result.append(((max(p) - min(p)) / max(p), int(r["step"])))
     return result
+
+
+def order(x):
+    """x to one digit, as the headers print it: 5e-4, not 5e-04."""
+    return f"{x:.0e}".replace("e-0", "e-")
+
+
+def header_check():
+    """The header's figures from the defaults' runs (paper scale and reduced, -tol 0)."""
+    fixed = ["-tol", "0", "-quiet", "1", "-vtkevery", "0"]
+    double = spreads(sleeve_outputs(run_scene("sleeve-circular", "single-header-double", "-scale", "paper",
+                                              *fixed))["points"])
+    runs = {scale: sleeve_outputs(run_scene("sleeve-circular-single", "single-header-" + scale, "-scale", scale,
+                                            *fixed))["points"] for scale in ("paper", "reduced")}
+    paper, reduced = spreads(runs["paper"]), spreads(runs["reduced"])
+    for scale, points in runs.items():  # (the header: the three touch at the same step)
+        first = next(r for r in points if max(float(r[f"pressure_{n}_Pa"]) for n in POINTS) > 0)
+        touching = sum(float(first[f"pressure_{n}_Pa"]) > 0 for n in POINTS)
+        check(touching == 3, f"sleeve-circular-single -scale {scale}: {touching} of the 3 points touch at the first "
+              f"contact step ({first['step']})")
+    worst = max(double)[0]
+    bound = 10.0 ** math.ceil(math.log10(worst)) if worst > 0 else 0
+    phrases = [f"the same force to {order(bound)}",
+               f"at the first contact step ({paper[0][1]}) they are {100 * paper[0][0]:.0f} % apart, "
+               f"{order(paper[-1][0])} at the end",
+               f"(-scale reduced: at its first contact step ({reduced[0][1]}), {100 * reduced[0][0]:.0f} % apart, "
+               f"{order(reduced[-1][0])} at the end"]
+    header_quotes("edp/scenes/sleeve-circular-single.edp", phrases)
+    return phrases
 
 
 def main():
@@ -58,7 +91,9 @@ def main():
               for a, b in zip(double["history"], single["history"])]
     print(f"info phase fractions of the two runs differ by at most {max(phases):.1e}: the phase "
           f"zones stay circular")
+    headers = header_check()
     record("sleeve_single_precision", {
+        "headers": headers,
         "test": "sleeve_single_precision", "mesh": "meshes/sleeve-coarse.msh", "steps": 600,
         "coordinates_rounded": rounded,
         "double_max_spread": worst_double[0], "double_max_spread_step": worst_double[1],
