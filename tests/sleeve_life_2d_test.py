@@ -19,7 +19,9 @@ coarse quarter rings and 1 s steps (the paper's scale):
   * the cooling without the mandrel (-mandrel 0) on sleeve-quarter, 0.25 s steps, leaves a
     checkerboard of martensite 2: the run fails at the cooling's end naming its fraction; with the
     mandrel (the default 20 MPa) the same cooling is martensite 1 throughout and clears the pipe
-    as the circle's closed form says (the radial life's clearance, 1e-3).
+    as the circle's closed form says (the radial life's clearance, 1e-3);
+  * the scene's header quotes its defaults' run (one more run, about 8 s) and the circle's
+    differences above as printed (checklib.header_quotes).
 Writes results/checks/sleeve_life_2d.json.
 """
 import os
@@ -27,7 +29,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from checklib import TEST_RESULTS, check, finish, record  # noqa: E402
+from checklib import TEST_RESULTS, check, finish, header_quotes, record  # noqa: E402
 from checklib import run_scene_captured as run, summary_of as summary  # noqa: E402
 
 CIRCLE = ["-pipeA", "0.0505", "-pipeB", "0.0505"]
@@ -46,8 +48,35 @@ def rel(a, b):
     return abs(a - b) / abs(b)
 
 
+def short(x):
+    """x to two digits as the header prints it: 5.5e-4, not 5.5e-04."""
+    return f"{x:.1e}".replace("e-0", "e-")
+
+
+def defaults_quoted():
+    """The header's figures of the scene's defaults (the elliptic pipe, k = 2 MPa), from a run of them."""
+    s = ran(*run("sleeve-life-2d", "life2d-defaults", *QUICK), "sleeve-life-2d at its defaults")
+    if not s:
+        return []
+    C = lambda kelvin: kelvin - 273.15  # noqa: E731
+    return [f"the free ring turns martensite at {s['T_forward_free']:.2f} K and back at {s['T_reverse_free']:.2f} K",
+            f"clearance at installation {s['installation_clearance'] * 1e6:.2f} um at "
+            f"{s['installation_clearance_angle_deg']:.0f} deg",
+            f"and {(s['installation_clearance_max'] - s['installation_clearance']) * 1e6:.0f} um more on the minor axis",
+            f"first contact at step {s['first_contact_step']} (inner {C(s['T_inner_first_contact']):.1f} C), all "
+            f"austenite from step {s['austenite_step']}",
+            f"clamping {s['clamp_pressure'] / 1e6:.3f} MPa, non-uniformity {100 * s['clamp_non_uniformity']:.2f} %, "
+            f"smallest nodal pressure {s['clamp_pressure_node_min'] / 1e6:.2f} MPa on the minor axis "
+            f"({s['clamp_pressure_node_min_angle_deg']:.0f} deg)",
+            f"the service (inner surface down to {C(s['service_T_inner_min']):.1f} C) leaves it austenite: the pressure "
+            f"stays {s['service_pressure_min'] / 1e6:.3f} MPa",
+            f"{s['n_steps']} steps (1 s), {s['dc_iterations_mean']:.2f} DC iterations a step (at most "
+            f"{s['dc_iterations_max']})"]
+
+
 def main():
     figures = {}
+    header = defaults_quoted()
     # ---- circular pipe, k = 2 MPa: clamping and cold service against the radial life ----
     radial = ran(*run("sleeve-life", "life2d-radial-k2e6", "-quiet", "1", "-dt", "1", "-cycles", "1"),
                  "sleeve-life -dt 1 -cycles 1 (nr 80)")
@@ -72,6 +101,8 @@ def main():
               f"{radial['clamp_pressure'] / 1e6:.4f} MPa: relative {c['clamp_pressure']:.2g} (6 layers), "
               f"{f['clamp_pressure']:.2g} (9 layers); service {c['service_pressure_min']:.2g}, "
               f"{f['service_pressure_min']:.2g}")
+        header.append(f"clamping within {short(c['clamp_pressure'])} (6 layers) and {short(f['clamp_pressure'])} "
+                      "(9 layers) of the radial nr 80's")
         check(c["installation_clearance"] <= 1e-3 and f["installation_clearance"] <= 1e-3,
               f"clearance at installation against the radial life's {radial['installation_clearance'] * 1e6:.3f} um: "
               f"relative {c['installation_clearance']:.2g}, {f['installation_clearance']:.2g}")
@@ -112,6 +143,7 @@ def main():
     if len(service) == 2 and radial:
         c, f = (rel(service[m], radial["service_pressure_min"]) for m in ("sleeve-coarse", "sleeve-aniso"))
         figures["circle_k1e6_radial_service_pressure_min"] = radial["service_pressure_min"]
+        header.append(f"the smallest service pressure within {100 * c:.2f} % (6 layers) and {100 * f:.2f} % (18 layers)")
         check(c <= 0.01 and f < c,
               f"circular pipe, k = 1 MPa: smallest service pressure {service['sleeve-coarse'] / 1e6:.3f} (6 layers), "
               f"{service['sleeve-aniso'] / 1e6:.3f} MPa (18 layers) against the radial life's "
@@ -170,7 +202,8 @@ def main():
               f"{s['installation_clearance_angle_deg']:g} deg, the radial life's {radial_clearance * 1e6:.3f} um "
               f"(relative {rel(s['installation_clearance'], radial_clearance):.2g})")
         figures["mandrel_clearance"] = s["installation_clearance"]
-    record("sleeve_life_2d", {"test": "sleeve_life_2d", **figures})
+    header_quotes("edp/scenes/sleeve-life-2d.edp", header)
+    record("sleeve_life_2d", {"test": "sleeve_life_2d", "header": header, **figures})
     finish()
 
 
