@@ -21,8 +21,9 @@ statements that the fit found them to agree with (section 4; docs/paper-scale.md
     first contact (a zero-force stage everywhere), while the soft spring on the top lets the near
     side touch at step 1;
   - S9, sleeve-random-threshold (Fig. 34): the reversion starts within 2.5 K of the paper's -25 C.
-The headers of sleeve-circular-gvar and sleeve-random-threshold quote these runs' numbers as
-printed (checklib.header_quotes). And the reduced scale is a preset: -scale reduced gives back the printed a = 300 and the meshes'
+The headers of sleeve-circular (with its steel shaft, -pipeE 2.1e11), sleeve-circular-gvar,
+sleeve-elliptic, sleeve-random-threshold and sleeve-offset (its default mesh: one more run) quote
+these runs' numbers as printed (checklib.header_quotes). And the reduced scale is a preset: -scale reduced gives back the printed a = 300 and the meshes'
 55 um interference. Records results/checks/paper_scale.json.
 """
 import os
@@ -68,6 +69,18 @@ def main():
           f"S3: final pressure {final / 1e9:.4f} GPa, Lame's for the 0.5 mm interference {lame / 1e9:.4f} GPa "
           f"({final / lame - 1:+.2e}), uniform within {s['final_pressure_non_uniformity']:.1e}")
     figures["circular"].update(final_pressure_Pa=final, lame_Pa=lame)
+    # Its header quotes this run, and the steel shaft's (-pipeE 2.1e11), as printed.
+    steel = sleeve_outputs(run_scene("sleeve-circular", "paper-circular-steel", *PAPER, "-quiet", "1", "-vtkevery", "0",
+                                     "-pipeE", "2.1e11"))["summary"]
+    onset_row = next(r for r in circ["history"] if float(r["fraction_austenite"]) > 0)  # (the reversion's first step)
+    contact_step = s["first_contact_step"]
+    header_quotes("edp/scenes/sleeve-circular.edp", [
+        f"zero ({contact_step - 1} steps, no contact yet); contact at step {contact_step} (inner "
+        f"{s['T_inner_first_contact'] - KELVIN_AT_0C:.1f} C)", f"martensite ({int(onset_row['step']) - contact_step} steps",
+        f"from {float(onset_row['T_inner_mean']) - KELVIN_AT_0C:.1f} C the steep rise",
+        f"(step {s['austenite_step']}, {s['T_inner_austenite'] - KELVIN_AT_0C:.1f} C): {final / 1e9:.3f} GPa",
+        f"austenite for good at step {steel['austenite_step']} ({steel['T_inner_austenite'] - KELVIN_AT_0C:.1f} C), final "
+        f"pressure {steel['final_pressure_mean'] / 1e6:.3f} MPa"])
 
     gvar = sleeve_outputs(run_scene("sleeve-circular-gvar", "paper-gvar", *PAPER, "-quiet", "1", "-vtkevery", "0"))
     # Its stages on the mean pressure against the inner surface's mean temperature (the heat
@@ -124,6 +137,13 @@ def main():
     check(0 < ratio < 0.03 and es["final_pressure_mean"] < final,
           f"S6b: final pressure nearly uniform, {100 * ratio:+.2f} % higher on the major axis, mean "
           f"{es['final_pressure_mean'] / 1e9:.4f} GPa below the circular {final / 1e9:.4f} GPa")
+    touch = minor_first  # (the row where the minor axis touches)
+    header_quotes("edp/scenes/sleeve-elliptic.edp", [
+        f"major (y) axis at step {es['first_contact_step']} (inner {es['T_inner_first_contact'] - KELVIN_AT_0C:.1f} C)",
+        f"rises to {max(p_major[:touch]) / 1e6:.1f} MPa and falls back to {p_major[touch] / 1e6:.1f} MPa (the paper's "
+        f"loosening, {100 * (1 - p_major[touch] / max(p_major[:touch])):.0f} %) by the time the minor axis touches (step "
+        f"{ell['points'][touch]['step']})", f"final {es['final_pressure_mean'] / 1e9:.4f} GPa",
+        f"({p_major[-1] / 1e6:.1f} vs {p_minor[-1] / 1e6:.1f} MPa)"])
     figures["elliptic"] = {"major_first_contact_step": major_first + 1, "minor_first_contact_step": minor_first + 1,
                            "major_fall": fall, "major_over_minor": ratio,
                            "final_over_circular": es["final_pressure_mean"] / final}
@@ -139,6 +159,18 @@ def main():
     figures["offset"] = {"non_uniformity": os_["final_pressure_non_uniformity"],
                          "final_over_circular": os_["final_pressure_mean"] / final,
                          "step_fallbacks": os_.get("step_fallbacks", 0)}
+
+    # The scene's header quotes its defaults' run (the default mesh, the fixed steps) as printed.
+    full = sleeve_outputs(run_scene("sleeve-offset", "paper-offset-default", *PAPER, "-quiet", "1", "-vtkevery", "0"))
+    fs = full["summary"]
+    touch_step = {point: next(int(r["step"]) for r in full["points"] if float(r[f"pressure_{point}_Pa"]) > 0)
+                  for point in ("near", "top", "far")}
+    header_quotes("edp/scenes/sleeve-offset.edp", [
+        f"the near side touches at step {touch_step['near']} (the offset equals the interference), the top at step "
+        f"{touch_step['top']}, the far side at step {touch_step['far']}; the ring slides over by "
+        f"{fs['anchor_displacement_x'] * 1e3:.2f} mm", f"the final level {fs['final_pressure_mean'] / 1e9:.4f} GPa "
+        f"({100 * (fs['final_pressure_mean'] / final - 1):.1f} % above the circular sleeve's), uniform within "
+        f"{100 * fs['final_pressure_non_uniformity']:.1f} %"])
 
     # Fig. 21-24, the paper's account (4.3: "the deformed ring coincides at one instant with the
     # pipe, and contact occurs then at every point"): point A where the offset ring touches the

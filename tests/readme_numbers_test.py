@@ -9,17 +9,13 @@ sleeve-radial at its defaults and with `-pipeE 2e11` (Lamé's compound pressure)
 at its defaults and with `-mu 0.2 -pullout 1e-3`, sleeve-circular-gvar (its austenite time).
 
 The scenes' headers likewise (checklib.header_quotes; their step numbers are the fixed steps',
--tol 0): sleeve-circular's four phases (the steps before contact, contact's step and temperature,
-the linear phase's steps, the reversion's onset, austenite's step and temperature, the final
-pressure) and its steel shaft (-pipeE 2.1e11: austenite's step and temperature, the final
-pressure); sleeve-radial's contact (temperature, time), Lamé's pressure, austenite's temperature
-and time, and -scale reduced's pressure and austenite temperature; sleeve-elliptic's first contact,
-the major axis's peak and its fall by the minor axis's touch (the paper's loosening), the final
-level and the two axes; sleeve-elliptic-friction's defaults (-tol 1e-3): its steps, non-uniformity
+-tol 0; sleeve-circular's, sleeve-elliptic's and sleeve-offset's in tests/paper_scale_test.py, which
+runs them): sleeve-radial's contact (temperature, time), Lamé's pressure, austenite's temperature
+and time, and -scale reduced's pressure and austenite temperature; sleeve-elliptic-friction's defaults (-tol 1e-3): its steps, non-uniformity
 and friction ratios; sleeve-life's defaults: the free ring's temperatures and width, the storage
 margin, the clearance, the clamping and the service; free-ring's dissipative loop (-dissipation 1e6:
-the ring's mean temperature before each transformation, the heat dissipated). Eight more runs,
-about 8 s.
+the ring's mean temperature before each transformation, the heat dissipated). Five more runs,
+about 5 s.
 Writes results/checks/readme_numbers.json.
 """
 import os
@@ -47,23 +43,8 @@ def headers():
     step numbers; else the defaults); returns the phrases."""
     phrases = {}
     fixed = ["-tol", "0"]
-    circular = run("sleeve-circular", "header-circular", "-vtkevery", "0", *fixed)
-    steel = run("sleeve-circular", "header-circular-steel", "-vtkevery", "0", "-pipeE", "2.1e11", *fixed)
     radial = run("sleeve-radial", "header-radial", *fixed)
     reduced = run("sleeve-radial", "header-radial-reduced", "-scale", "reduced", *fixed)
-    if circular and steel:
-        s, t = summary_of(circular), summary_of(steel)
-        history = rows(os.path.join(circular, "history.csv"))
-        onset = next(r for r in history if float(r["fraction_austenite"]) > 0)  # (the reversion's first step)
-        contact = s["first_contact_step"]
-        phrases["sleeve-circular"] = [
-            f"zero ({contact - 1} steps, no contact yet); contact at step {contact} (inner "
-            f"{celsius(s['T_inner_first_contact']):.1f} C)", f"martensite ({int(onset['step']) - contact} steps",
-            f"from {celsius(float(onset['T_inner_mean'])):.1f} C the steep rise",
-            f"(step {s['austenite_step']}, {celsius(s['T_inner_austenite']):.1f} C): {s['final_pressure_mean'] / 1e9:.3f} GPa",
-            f"austenite for good at step {t['austenite_step']} ({celsius(t['T_inner_austenite']):.1f} C), final pressure "
-            f"{t['final_pressure_mean'] / 1e6:.3f} MPa"]
-        header_quotes("edp/scenes/sleeve-circular.edp", phrases["sleeve-circular"])
     if radial and reduced:
         s, r = summary_of(radial), summary_of(reduced)
         t = {int(h["step"]): float(h["t"]) for h in rows(os.path.join(radial, "history.csv"))}
@@ -74,20 +55,6 @@ def headers():
             f"({celsius(s['T_inner_austenite']):.1f} C, t = {t[s['austenite_step']]:.0f} s)",
             f"({r['final_pressure_mean'] / 1e6:.2f} MPa, austenite at {celsius(r['T_inner_austenite']):.1f} C)"]
         header_quotes("edp/scenes/sleeve-radial.edp", phrases["sleeve-radial"])
-    elliptic = run("sleeve-elliptic", "header-elliptic", "-vtkevery", "0", *fixed)
-    if elliptic:
-        s = summary_of(elliptic)
-        points = rows(os.path.join(elliptic, "points.csv"))
-        major = [float(p["pressure_y_axis_Pa"]) for p in points]
-        touch = next(i for i, p in enumerate(points) if float(p["pressure_x_axis_Pa"]) > 0)  # (the minor axis)
-        peak = max(major[:touch])
-        phrases["sleeve-elliptic"] = [
-            f"major (y) axis at step {s['first_contact_step']} (inner {celsius(s['T_inner_first_contact']):.1f} C)",
-            f"rises to {peak / 1e6:.1f} MPa and falls back to {major[touch] / 1e6:.1f} MPa (the paper's loosening, "
-            f"{100 * (1 - major[touch] / peak):.0f} %) by the time the minor axis touches (step {points[touch]['step']})",
-            f"final {s['final_pressure_mean'] / 1e9:.4f} GPa",
-            f"({major[-1] / 1e6:.1f} vs {float(points[-1]['pressure_x_axis_Pa']) / 1e6:.1f} MPa)"]
-        header_quotes("edp/scenes/sleeve-elliptic.edp", phrases["sleeve-elliptic"])
     friction = run("sleeve-elliptic-friction", "header-elliptic-friction", "-vtkevery", "0")  # (its defaults: -tol 1e-3)
     if friction:
         s = summary_of(friction)
