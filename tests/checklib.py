@@ -98,6 +98,17 @@ def header_quotes(script, quoted, label=None):
     return missing
 
 
+def doc_quotes(document, quoted, label=None):
+    """As header_quotes for a Markdown document (README.md, docs/*.md): its text joined, white space
+    collapsed, holds every phrase of `quoted`. Returns the phrases not found."""
+    with open(os.path.join(ROOT, document), encoding="utf-8") as f:
+        text = " ".join(f.read().split())
+    missing = [q for q in quoted if q not in text]
+    check(not missing, f"{label or document} quotes the runs' numbers: {len(quoted) - len(missing)} of {len(quoted)} "
+          f"found; not found: {missing}")
+    return missing
+
+
 def summary_of(out):
     """The summary.json a scene wrote to `out`, read as the plot tools read it (sma.results_io
     read_json): a key given twice, NaN or a value that is not an object is refused, naming the file

@@ -81,7 +81,7 @@ sys.path.insert(0, HERE)
 
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "tools", "bench", "oracles"))
 
-from checklib import check, finish, header_quotes, record, rows, run_scene, run_scene_captured, summary_of  # noqa: E402
+from checklib import check, doc_quotes, finish, header_quotes, record, rows, run_scene, run_scene_captured, summary_of  # noqa: E402
 from curve_error import curve_error  # noqa: E402
 from plane_section import density_misfit, density_profile, towards_x, towards_y, weighted_pressure  # noqa: E402
 
@@ -419,6 +419,15 @@ def main():
               f"{axial / 1e6:.1f} MPa along z (mu p {0.2 * pressure / 1e6:.1f} MPa)"]
     figures["header_quoted"] = quoted
     header_quotes("edp/scenes/sleeve-3d.edp", quoted)
+    # and README's, of the same runs
+    fine = solid[3]["summary"]
+    readme = [f"final ring-averaged pressure at mid-length {defaults['final_pressure_mid'] / 1e6:.2f} MPa at its default "
+              f"2 x 8 x 10 cells ({defaults['nodes']} nodes", f"{fine['final_pressure_mid'] / 1e6:.2f} at 3 x 12 x 15",
+              f"{f0['moment_final'] / 1e3:.2f} kN m frictionless",
+              f"{f0['nodes_open_final']} of {b0['summary']['contact_nodes']} bore nodes open"
+              + (", no leak path" if f0.get("leak_path_angle") is None else "")]
+    figures["readme_quoted"] = readme
+    doc_quotes("README.md", readme)
 
     # 4. bad input
     for args, culprit in ((["-nt", "1"], "-nt"), (["-pipeE", "2e11"], "-pipeE"), (["-plane", "stress"], "-plane"),
