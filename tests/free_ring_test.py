@@ -12,6 +12,9 @@ Runs edp/scenes/free-ring.edp with the paper's latent heat and with none, and ch
   * the latent heat shows in T: the ring is warmer than without latent heat while it transforms on
     cooling (by > 1 K) and colder while it transforms back on heating (by > 1 K);
   * the fixed point converges in a bounded number of iterations per step (<= 10);
+  * the on/off law's chatter is said: at T0 the ring flips whole between the phases from step to
+    step; the zigzags of its austenite fraction, recomputed from history.csv, are summary.json's
+    fraction_zigzag_steps (> 0, chatter true), and -phasemodel fraction has none;
   * Rannacher start-up: with a temperature jump at t = 0 and dt = 20 s, Crank-Nicolson alone makes
     the inner-surface temperature go down while the ring is heated (the oscillation of CN on
     non-smooth data); two backward-Euler steps first remove it.
@@ -44,6 +47,19 @@ def reverse_temperature(p):
         c = p["rho"] * p["latent"] / p["T0"] * (t - p["T0"])
         lo, hi = (t, hi) if alpha * alpha > c * bulk else (lo, t)
     return lo
+
+
+def zigzag_steps(curve):
+    """Steps where the curve's increments changed sign at the last two steps in a row, each above
+    1e-6 of its largest value so far (dct.idp CurveZigzag's rule, from 0 before the first step)."""
+    previous, d1, d2, largest, count = 0.0, 0.0, 0.0, 0.0, 0
+    for p in curve:
+        d = p - previous
+        largest = max(largest, abs(p))
+        floor = 1e-6 * largest
+        count += d * d1 < 0 and d1 * d2 < 0 and abs(d) > floor and abs(d1) > floor and abs(d2) > floor
+        previous, d1, d2 = p, d, d1
+    return count
 
 
 def main():
@@ -101,6 +117,18 @@ def main():
     check(warmer > 1, f"latent heat warms the transforming ring on cooling: up to {warmer:.3f} K above the run without")
     check(colder < -1, f"latent heat cools the ring transforming back on heating: down to {colder:.3f} K below")
     switches = sum(1 for a, b in zip(h["fraction_austenite"], h["fraction_austenite"][1:]) if a != b)
+    # The on/off law's whole-triangle jumps: at T0 the nearly uniform ring flips whole between the
+    # phases from one step to the next; the scene says so (a note, summary.json's zigzag count),
+    # and the fraction model, whose points turn by degrees, has none.
+    zigzags = zigzag_steps(h["fraction_austenite"])
+    fraction_summary, fraction_h = run("free-ring-fraction", "-phasemodel", "fraction")
+    fraction_zigzags = zigzag_steps(fraction_h["fraction_austenite"])
+    check(zigzags > 0 and summary["fraction_zigzag_steps"] == zigzags and summary["chatter"] is True,
+          f"on/off: the austenite fraction zigzags at {zigzags} steps (recomputed from history.csv), summary.json "
+          f"{summary['fraction_zigzag_steps']}, chatter {summary['chatter']}")
+    check(fraction_zigzags == 0 == fraction_summary["fraction_zigzag_steps"] and fraction_summary["chatter"] is False,
+          f"-phasemodel fraction: {fraction_zigzags} zigzags (summary.json {fraction_summary['fraction_zigzag_steps']}), "
+          f"chatter {fraction_summary['chatter']}")
     fp_max = max(h["fixed_point_iterations"])
     check(fp_max <= 10, f"fixed point converged in at most {fp_max:.0f} iterations per step (bound 10)")
     record("free_ring_transformation", {
@@ -110,7 +138,8 @@ def main():
         "fixed_point_iterations_max": fp_max,
         "fixed_point_iterations_mean": sum(h["fixed_point_iterations"]) / n,
         "dc_iterations_max": max(h["dc_iterations"]),
-        "ring_phase_switches": switches, "wall_seconds": summary["wall_seconds"]})
+        "ring_phase_switches": switches, "fraction_zigzag_steps": zigzags,
+        "fraction_model_zigzag_steps": fraction_zigzags, "wall_seconds": summary["wall_seconds"]})
 
     # Rannacher start-up on a temperature jump (ramps of 0 s).
     jump = ["-latent", "0", "-Tinit", "196", "-Tlow", "300", "-Thigh", "300", "-tcool", "0",
