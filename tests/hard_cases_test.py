@@ -28,6 +28,7 @@ unless said otherwise; about 40 s.
 6. Slivers (meshes/sliver.geo): a layer of quality 0.011 converges to Lame within 2e-3; a layer of
    quality 9e-6 (area 7e-6 of the mean) is rejected up front naming the triangle; raising
    -meshminquality above 0.011 rejects the first one too.
+docs/stability.md holds the tables of cases 1-3 as this test formats them (stability_rows).
 Writes results/checks/hard_cases.json.
 """
 import math
@@ -39,7 +40,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools", "bench", "oracles"))
 
-from checklib import KELVIN_AT_0C, REDUCED, ROOT, SLEEVE_SCENES, TEST_RESULTS, check, finish, read_json, record, run_scene, run_scene_captured, sleeve_outputs, sleeve_geometry  # noqa: E402
+from checklib import KELVIN_AT_0C, REDUCED, ROOT, SLEEVE_SCENES, TEST_RESULTS, check, doc_quotes, finish, read_json, record, run_scene, run_scene_captured, sleeve_outputs, sleeve_geometry  # noqa: E402
 from lame import lame_pressure  # noqa: E402
 
 COARSE = ["-mesh", "meshes/sleeve-coarse.msh", "-quiet", "1"]
@@ -131,6 +132,10 @@ def grazing(reference):
           f"{p55 / 1e6:.4f} MPa (Lame with delta = 0: 0)")
     tol = 1e-6 * INTERFERENCE
     sig = signorini("interference 0", contact_state(out, zero), tol)
+    # (docs/stability.md states these as round-off: the bounds it prints)
+    check(pmax < 1e-4 and sig["min_gap_m"] > -1e-13 and sig["max_gap_in_contact_m"] < 1e-13,
+          f"interference 0: round-off as docs/stability.md states it: pressure {pmax:.1e} < 1e-4 Pa, n.u + gap "
+          f"{sig['min_gap_m']:.1e} > -1e-13 m, {sig['max_gap_in_contact_m']:.1e} < 1e-13 m where in contact")
     counts = [int(r["contact_nodes"]) for r in zero["history"]]
     changes = [i + 2 for i, (a, b) in enumerate(zip(counts, counts[1:])) if a != b]
     settled = s["austenite_step"]
@@ -340,6 +345,67 @@ def slivers(E, nu):
                 degenerate_message=m.group(0) if m else None, strict_message=m2.group(0) if m2 else None)
 
 
+def short(x, sign=False):
+    """x to two digits as the page prints it: 5.4e-4 (not 5.4e-04), 0 for 0."""
+    if x == 0:
+        return "0"
+    text = f"{x:+.1e}" if sign else f"{x:.1e}"
+    mantissa, exponent = text.split("e")
+    return f"{mantissa}e{int(exponent)}"
+
+
+def stability_rows(results):
+    """docs/stability.md's tables of cases 1-3, formatted from the results as the page prints them:
+    the page must hold each (checklib.doc_quotes), so that its figures stay this test's."""
+    def C(kelvin):
+        return kelvin - KELVIN_AT_0C
+
+    def its(entry):
+        i = entry["iterations"]
+        return (f"{i['fixed_point_iterations']['max']:.0f}", f"{i['dc_iterations']['max']:.0f}",
+                f"{i['psor_sweeps']['max']:.0f}")
+    g = results["grazing"]
+    zero = g["interference_0"]
+    fp, dc, psor = its(zero)
+    changes = zero["contact_set_changes_at_steps"]
+    rows_ = [f"| contact set | touches at step {zero['first_contact_step']}, the step the ring is austenite for good "
+             f"(the contact set changes {len(changes)} time{'s' if len(changes) != 1 else ''}: at step"
+             f"{'s' if len(changes) != 1 else ''} {', '.join(map(str, changes))}); no change after |",
+             f"| loops | at most {fp} fixed-point, {dc} DC iterations, {psor} PSOR sweeps per step |",
+             f"| +0.1 um | {g['plus_0p1um_final_pressure_Pa']:,.2f} Pa = the 55 um fit x 0.1/55 to "
+             f"{short(abs(g['plus_0p1um_scaling_error']))} |".replace(",", " ")]
+    for mu, e in results["friction"].items():
+        fp, dc, psor = its(e)
+        slip = f"{e['iterations']['slip_iterations']['max']:.0f}"
+        change = "" if mu == "0" else short(e["mean_pressure_change_from_mu_0"], sign=True)
+        cone = "" if mu == "0" else f"{e['max_cone_ratio']:.2f}"
+        rows_.append(f"| {mu} | {e['final_pressure_mean_Pa'] / 1e6:.5f} | {change} | {100 * e['non_uniformity']:.1f} % | "
+                     f"{cone} | {e['tangential_over_normal_max']:.3f} | {slip} | {dc} | {psor} |")
+    ls = results["large_steps"]
+    for n in ("1500", "150", "15"):
+        e = ls[n]
+        fp, dc, psor = its(e)
+        diff = "" if e["diff_from_1500_steps"] is None else short(e["diff_from_1500_steps"])
+        dt = e["dt_s"]
+        rows_.append(f"| {n} | {dt:g} s | {e['final_pressure_Pa'] / 1e6:.6f} MPa | {diff} | {short(e['lame_error'])} | "
+                     f"{e['first_contact_time_s']:.1f} s (step {e['first_contact_step']}), {C(e['T_inner_first_contact_K']):.1f} C | "
+                     f"{e['linear_phase_steps']} steps | {e['austenite_step'] * dt:.1f} s (step {e['austenite_step']}), "
+                     f"{C(e['T_inner_austenite_K']):.1f} C | {fp}, {dc}, {psor} |")
+    r = results["random_threshold_20K"]
+    rows_ += [f"With the default fraction model it runs through: at most {r['fraction_model']['fixed_point_iterations_max']} "
+              "fixed-point iterations in a step",
+              r["loud_failure"] or "no message",
+              f"Measured: {r.get('cycles')} cycles, one triangle each, {min(r.get('bisections', [0]))}-"
+              f"{max(r.get('bisections', [0]))} bisections, relative change of T <= {short(r.get('max_residual', 0))}"]
+    sl = results["slivers"]
+    i = sl["iterations"]
+    rows_.append(f"converges: {sl['final_pressure_Pa'] / 1e6:.4f} MPa, {short(sl['lame_error'])} from Lamé (asserted <= 2e-3; "
+                 f"the structured coarse mesh {short(results['large_steps']['1500']['lame_error'])}), non-uniformity "
+                 f"{100 * sl['non_uniformity']:.1f} %, Signorini to {short(max(-sl['min_gap_m'], sl['max_gap_in_contact_m']))} m; "
+                 f"at most {i['dc_iterations']['max']:.0f} DC iterations and {i['psor_sweeps']['max']:.0f} PSOR sweeps per step |")
+    return rows_
+
+
 def main():
     reference = sleeve_outputs(run_scene("sleeve-circular", "hard-reference-300", *COARSE, "-steps", "300"))
     par = reference["summary"]["parameters"]
@@ -354,6 +420,8 @@ def main():
     line = next((ln for ln in text.splitlines() if ln.startswith("sleeve-circular: 20 steps")), "")
     check(code == 0 and "no contact, never all austenite for good" in line and "-274" not in text,
           f"a run with no contact and no reversion says so: {line[:120]}")
+    results["stability_rows"] = stability_rows(results)
+    doc_quotes("docs/stability.md", results["stability_rows"])
     record("hard_cases", results)
     finish()
 
