@@ -16,7 +16,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from checklib import check, finish, record, run_scene, sleeve_outputs, sleeve_geometry  # noqa: E402
+from checklib import check, doc_quotes, finish, record, run_scene, sleeve_outputs, sleeve_geometry  # noqa: E402
 
 RING_INNER = sleeve_geometry()["Ri"]  # m: meshes/sleeve-geometry.txt, the meshes' ring
 
@@ -47,6 +47,13 @@ def main():
           f"above 56 um: first contact steps {[scan[um]['first_contact_step'] for um in scan]}")
     check(all(scan[a]["first_contact_step"] >= scan[b]["first_contact_step"] for a, b in zip(scan, list(scan)[1:])),
           "a larger interference never touches later")
+    # docs/measurements.md#m-interference-scale-red quotes this scan as printed
+    open_ = [um for um in scan if scan[um]["first_contact_step"] > 1]
+    steps = " / ".join(str(scan[um]["first_contact_step"]) for um in open_)
+    temperatures = " / ".join(f"{scan[um]['T_inner_first_contact_K']:.1f}" for um in open_)
+    reverts = max(v["T_inner_reversion_K"] for v in scan.values())
+    doc_quotes("docs/measurements.md", [f"{' / '.join(map(str, open_))} um touch at steps {steps} (inner surface "
+                                        f"{temperatures} K), all revert from {reverts:.1f} K"])
     record("sleeve_interference", {"test": "sleeve_interference", "mesh": "meshes/sleeve-coarse.msh",
                                    "steps": 600, "ring_inner_radius_m": RING_INNER,
                                    "window_closes_m": min(closed) * 1e-6 if closed else None,
