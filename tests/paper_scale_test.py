@@ -23,7 +23,8 @@ statements that the fit found them to agree with (section 4; docs/paper-scale.md
   - S9, sleeve-random-threshold (Fig. 34): the reversion starts within 2.5 K of the paper's -25 C.
 The headers of sleeve-circular (with its steel shaft, -pipeE 2.1e11), sleeve-circular-gvar,
 sleeve-elliptic, sleeve-random-threshold and sleeve-offset (its default mesh: one more run) quote
-these runs' numbers as printed (checklib.header_quotes). And the reduced scale is a preset: -scale reduced gives back the printed a = 300 and the meshes'
+these runs' numbers as printed (checklib.header_quotes), and README's table those of sleeve-elliptic,
+sleeve-offset and sleeve-random-threshold. And the reduced scale is a preset: -scale reduced gives back the printed a = 300 and the meshes'
 55 um interference. Records results/checks/paper_scale.json.
 """
 import os
@@ -32,8 +33,8 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools", "bench", "oracles"))
 
-from checklib import (KELVIN_AT_0C, check, finish, four_phases, header_quotes, r_squared, record,  # noqa: E402
-                      run_scene, sleeve_geometry, sleeve_outputs)
+from checklib import (KELVIN_AT_0C, check, doc_quotes, finish, four_phases, header_quotes, r_squared,  # noqa: E402
+                      record, run_scene, sleeve_geometry, sleeve_outputs)
 from lame import lame_pressure  # noqa: E402
 
 # The default scale, stated so that run_scene does not pin the reduced scale, and the paper's fixed
@@ -144,6 +145,12 @@ def main():
         f"loosening, {100 * (1 - p_major[touch] / max(p_major[:touch])):.0f} %) by the time the minor axis touches (step "
         f"{ell['points'][touch]['step']})", f"final {es['final_pressure_mean'] / 1e9:.4f} GPa",
         f"({p_major[-1] / 1e6:.1f} vs {p_minor[-1] / 1e6:.1f} MPa)"])
+    # and README's table, of the same run
+    readme = [f"contact on the major axis first (step {es['first_contact_step']}), whose pressure falls back by "
+              f"{100 * (1 - p_major[touch] / max(p_major[:touch])):.0f} % before the minor axis touches (step "
+              f"{ell['points'][touch]['step']}: the paper's loosening), final force "
+              f"{100 * (1 - es['final_pressure_mean'] / final):.0f} % below the circular case, "
+              f"{100 * (p_major[-1] / p_minor[-1] - 1):.1f} % higher on the major axis"]
     figures["elliptic"] = {"major_first_contact_step": major_first + 1, "minor_first_contact_step": minor_first + 1,
                            "major_fall": fall, "major_over_minor": ratio,
                            "final_over_circular": es["final_pressure_mean"] / final}
@@ -171,6 +178,9 @@ def main():
         f"{fs['anchor_displacement_x'] * 1e3:.2f} mm", f"the final level {fs['final_pressure_mean'] / 1e9:.4f} GPa "
         f"({100 * (fs['final_pressure_mean'] / final - 1):.1f} % above the circular sleeve's), uniform within "
         f"{100 * fs['final_pressure_non_uniformity']:.1f} %"])
+    readme.append(f"the ring recentres (slides {fs['anchor_displacement_x'] * 1e3:.2f} mm), final force uniform within "
+                  f"{100 * fs['final_pressure_non_uniformity']:.1f} % at the centred level "
+                  f"({100 * (fs['final_pressure_mean'] / final - 1):+.1f} %)")
 
     # Fig. 21-24, the paper's account (4.3: "the deformed ring coincides at one instant with the
     # pipe, and contact occurs then at every point"): point A where the offset ring touches the
@@ -203,6 +213,8 @@ def main():
     onset_C = float(onset["T_inner_mean"]) - KELVIN_AT_0C
     check(abs(onset_C - (-25.0)) <= 2.5, f"S9: the random threshold's reversion starts at {onset_C:.1f} C (paper: -25 C)")
     figures["random"] = {"reversion_onset_C": onset_C, "seed": rnd["summary"].get("seed")}
+    readme.append(f"the phase change from {onset_C:.0f} C (paper: -25 C)")
+    doc_quotes("README.md", readme)
     header_quotes("edp/scenes/sleeve-random-threshold.edp", [
         f"phase change from {onset_C:.1f} C (paper: -25 C)",
         f"(austenite for good at {rnd['summary']['T_inner_austenite'] - KELVIN_AT_0C:.1f} C instead of "
