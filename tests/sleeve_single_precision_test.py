@@ -15,11 +15,12 @@ Writes results/checks/sleeve_single_precision.json.
 """
 import math
 import os
+import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from checklib import check, finish, header_quotes, record, run_scene, sleeve_outputs  # noqa: E402
+from checklib import ROOT, check, finish, header_quotes, record, run_scene, sleeve_outputs  # noqa: E402
 
 POINTS = ("x_axis", "diagonal", "y_axis")
 COMMON = ["-mesh", "meshes/sleeve-coarse.msh", "-steps", "600", "-quiet", "1"]
@@ -61,6 +62,11 @@ def header_check():
                f"(-scale reduced: at its first contact step ({reduced[0][1]}), {100 * reduced[0][0]:.0f} % apart, "
                f"{order(reduced[-1][0])} at the end"]
     header_quotes("edp/scenes/sleeve-circular-single.edp", phrases)
+    # README's table gives the double precision mesh's spread as a bound: it must hold
+    with open(os.path.join(ROOT, "README.md"), encoding="utf-8") as f:
+        m = re.search(r"the three inner points no longer agree \(double: within (\S+)\)", f.read())
+    check(m is not None and worst <= float(m[1]), f"README: double precision's three points within "
+          f"{m[1] if m else '(no bound found)'}: {worst:.1e}")
     return phrases
 
 
