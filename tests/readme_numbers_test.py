@@ -6,7 +6,8 @@ when the model moved (README said 0.151 GPa for the steel shaft, the runs 0.150)
 
 Runs (paper scale, about 15 s in all): sleeve-circular at its defaults and with `-pipeE 2e11`,
 sleeve-radial at its defaults and with `-pipeE 2e11` (Lamé's compound pressure), sleeve-axisymmetric
-at its defaults and with `-mu 0.2 -pullout 1e-3`, sleeve-circular-gvar (its austenite time).
+at its defaults and with `-mu 0.2 -pullout 1e-3`, sleeve-circular-gvar (its austenite time), sleeve-life
+at k = 1 and 0 MPa (the pressure after the cold hold; k = 2 MPa is the headers' run).
 
 The scenes' headers likewise (checklib.header_quotes; their step numbers are the fixed steps',
 -tol 0; sleeve-circular's, sleeve-elliptic's and sleeve-offset's in tests/paper_scale_test.py, which
@@ -22,7 +23,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checklib import ROOT, check, finish, header_quotes, record, rows, run_scene_captured, summary_of  # noqa: E402
+from checklib import ROOT, TEST_RESULTS, check, finish, header_quotes, record, rows, run_scene_captured, summary_of  # noqa: E402
 
 sys.path.insert(0, os.path.join(ROOT, "tools", "docs"))
 from paper_scale_metrics import curve  # noqa: E402
@@ -128,6 +129,17 @@ def main():
         for phrase in phrases:
             check(phrase in flat, f"README quotes the {what} run as the run gives it: '{phrase}'")
     quoted["headers"] = headers()
+    # sleeve-life's service at k = 2 (its default: headers' run), 1 and 0 MPa
+    life = {"2": os.path.join(TEST_RESULTS, "readme-header-life")}
+    life.update({k: run("sleeve-life", f"life-k{k}", "-dissipation", f"{k}e6" if k != "0" else "0") for k in ("1", "0")})
+    if all(life.values()) and os.path.exists(os.path.join(life["2"], "summary.json")):
+        cold = {k: summary_of(out)["pressure_at_service_Tmin"] / 1e6 for k, out in life.items()}
+        quoted["sleeve-life"] = [
+            f"heating to clamp ({summary_of(life['2'])['clamp_pressure'] / 1e6:.2f} MPa)",
+            f"the pressure after the hold at the lowest service temperature {cold['2']:.2f} MPa at k = 2 MPa, "
+            f"{cold['1']:.2f} at 1 MPa, {cold['0']:.2f} at 0"]
+        for phrase in quoted["sleeve-life"]:
+            check(phrase in flat, f"README quotes the sleeve-life runs as they give it: '{phrase}'")
     record("readme_numbers", quoted)
     finish()
 
