@@ -140,6 +140,12 @@ def main():
             f"{cold['1']:.2f} at 1 MPa, {cold['0']:.2f} at 0"]
         for phrase in quoted["sleeve-life"]:
             check(phrase in flat, f"README quotes the sleeve-life runs as they give it: '{phrase}'")
+        s0, s1 = summary_of(life["0"]), summary_of(life["1"])
+        header_quotes("edp/scenes/sleeve-life.edp", [
+            f"from an inner surface at {celsius(s0['service_onset_T_inner']):.1f} C (k = 0) and "
+            f"{celsius(s1['service_onset_T_inner']):.1f} C (k = 1 MPa)",
+            f"falls to {cold['0']:.2f} MPa (k = 0) and {cold['1']:.2f} MPa (k = 1 MPa; service minimum "
+            f"{s1['service_pressure_min'] / 1e6:.2f})"], "sleeve-life's header (k = 0, 1 MPa)")
     record("readme_numbers", quoted)
     finish()
 
