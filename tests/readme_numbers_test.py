@@ -145,7 +145,7 @@ def main():
             f"from an inner surface at {celsius(s0['service_onset_T_inner']):.1f} C (k = 0) and "
             f"{celsius(s1['service_onset_T_inner']):.1f} C (k = 1 MPa)",
             f"falls to {cold['0']:.2f} MPa (k = 0) and {cold['1']:.2f} MPa (k = 1 MPa; service minimum "
-            f"{s1['service_pressure_min'] / 1e6:.2f})"], "sleeve-life's header (k = 0, 1 MPa)")
+            f"{s1['service_pressure_min'] / 1e6:.2f})"], "sleeve-life (k = 0, 1 MPa)")
     record("readme_numbers", quoted)
     finish()
 
