@@ -372,8 +372,9 @@ def stability_rows(results):
              f"(the contact set changes {len(changes)} time{'s' if len(changes) != 1 else ''}: at step"
              f"{'s' if len(changes) != 1 else ''} {', '.join(map(str, changes))}); no change after |",
              f"| loops | at most {fp} fixed-point, {dc} DC iterations, {psor} PSOR sweeps per step |",
-             f"| +0.1 um | {g['plus_0p1um_final_pressure_Pa']:,.2f} Pa = the 55 um fit x 0.1/55 to "
-             f"{short(abs(g['plus_0p1um_scaling_error']))} |".replace(",", " ")]
+             f"| +0.1 um | {g['plus_0p1um_final_pressure_Pa']:,.2f} Pa = the 55 um fit x 0.1/55 to ".replace(",", " ")
+             + ("round-off (below 1e-10)" if abs(g["plus_0p1um_scaling_error"]) < 1e-10
+                else short(abs(g["plus_0p1um_scaling_error"]))) + " |"]
     for mu, e in results["friction"].items():
         fp, dc, psor = its(e)
         slip = f"{e['iterations']['slip_iterations']['max']:.0f}"
