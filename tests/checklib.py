@@ -98,6 +98,20 @@ def header_quotes(script, quoted, label=None):
     return missing
 
 
+def celsius(kelvin):
+    """A temperature in degrees Celsius, as the headers and pages print them."""
+    return kelvin - KELVIN_AT_0C
+
+
+def sci(x, digits=2, sign=False):
+    """x in scientific notation to `digits` significant digits, as the pages and headers print it:
+    5.4e-4 (not Python's 5.4e-04), +1.2e-6 with sign, 0 for 0."""
+    if x == 0:
+        return "0"
+    mantissa, exponent = f"{x:{'+' if sign else ''}.{digits - 1}e}".split("e")
+    return f"{mantissa}e{int(exponent)}"
+
+
 def doc_quotes(document, quoted, label=None):
     """As header_quotes for a Markdown document (README.md, docs/*.md): its text joined, white space
     collapsed, holds every phrase of `quoted`. Returns the phrases not found."""

@@ -40,7 +40,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools", "bench", "oracles"))
 
-from checklib import KELVIN_AT_0C, REDUCED, ROOT, SLEEVE_SCENES, TEST_RESULTS, check, doc_quotes, finish, read_json, record, run_scene, run_scene_captured, sleeve_outputs, sleeve_geometry  # noqa: E402
+from checklib import KELVIN_AT_0C, REDUCED, ROOT, SLEEVE_SCENES, TEST_RESULTS, celsius, check, doc_quotes, finish, read_json, record, run_scene, run_scene_captured, sci, sleeve_outputs, sleeve_geometry  # noqa: E402
 from lame import lame_pressure  # noqa: E402
 
 COARSE = ["-mesh", "meshes/sleeve-coarse.msh", "-quiet", "1"]
@@ -345,21 +345,9 @@ def slivers(E, nu):
                 degenerate_message=m.group(0) if m else None, strict_message=m2.group(0) if m2 else None)
 
 
-def short(x, sign=False):
-    """x to two digits as the page prints it: 5.4e-4 (not 5.4e-04), 0 for 0."""
-    if x == 0:
-        return "0"
-    text = f"{x:+.1e}" if sign else f"{x:.1e}"
-    mantissa, exponent = text.split("e")
-    return f"{mantissa}e{int(exponent)}"
-
-
 def stability_rows(results):
     """docs/stability.md's tables of cases 1-3, formatted from the results as the page prints them:
     the page must hold each (checklib.doc_quotes), so that its figures stay this test's."""
-    def C(kelvin):
-        return kelvin - KELVIN_AT_0C
-
     def its(entry):
         i = entry["iterations"]
         return (f"{i['fixed_point_iterations']['max']:.0f}", f"{i['dc_iterations']['max']:.0f}",
@@ -374,11 +362,11 @@ def stability_rows(results):
              f"| loops | at most {fp} fixed-point, {dc} DC iterations, {psor} PSOR sweeps per step |",
              f"| +0.1 um | {g['plus_0p1um_final_pressure_Pa']:,.2f} Pa = the 55 um fit x 0.1/55 to ".replace(",", " ")
              + ("round-off (below 1e-10)" if abs(g["plus_0p1um_scaling_error"]) < 1e-10
-                else short(abs(g["plus_0p1um_scaling_error"]))) + " |"]
+                else sci(abs(g["plus_0p1um_scaling_error"]))) + " |"]
     for mu, e in results["friction"].items():
         fp, dc, psor = its(e)
         slip = f"{e['iterations']['slip_iterations']['max']:.0f}"
-        change = "" if mu == "0" else short(e["mean_pressure_change_from_mu_0"], sign=True)
+        change = "" if mu == "0" else sci(e["mean_pressure_change_from_mu_0"], sign=True)
         cone = "" if mu == "0" else f"{e['max_cone_ratio']:.2f}"
         rows_.append(f"| {mu} | {e['final_pressure_mean_Pa'] / 1e6:.5f} | {change} | {100 * e['non_uniformity']:.1f} % | "
                      f"{cone} | {e['tangential_over_normal_max']:.3f} | {slip} | {dc} | {psor} |")
@@ -386,23 +374,23 @@ def stability_rows(results):
     for n in ("1500", "150", "15"):
         e = ls[n]
         fp, dc, psor = its(e)
-        diff = "" if e["diff_from_1500_steps"] is None else short(e["diff_from_1500_steps"])
+        diff = "" if e["diff_from_1500_steps"] is None else sci(e["diff_from_1500_steps"])
         dt = e["dt_s"]
-        rows_.append(f"| {n} | {dt:g} s | {e['final_pressure_Pa'] / 1e6:.6f} MPa | {diff} | {short(e['lame_error'])} | "
-                     f"{e['first_contact_time_s']:.1f} s (step {e['first_contact_step']}), {C(e['T_inner_first_contact_K']):.1f} C | "
+        rows_.append(f"| {n} | {dt:g} s | {e['final_pressure_Pa'] / 1e6:.6f} MPa | {diff} | {sci(e['lame_error'])} | "
+                     f"{e['first_contact_time_s']:.1f} s (step {e['first_contact_step']}), {celsius(e['T_inner_first_contact_K']):.1f} C | "
                      f"{e['linear_phase_steps']} steps | {e['austenite_step'] * dt:.1f} s (step {e['austenite_step']}), "
-                     f"{C(e['T_inner_austenite_K']):.1f} C | {fp}, {dc}, {psor} |")
+                     f"{celsius(e['T_inner_austenite_K']):.1f} C | {fp}, {dc}, {psor} |")
     r = results["random_threshold_20K"]
     rows_ += [f"With the default fraction model it runs through: at most {r['fraction_model']['fixed_point_iterations_max']} "
               "fixed-point iterations in a step",
               r["loud_failure"] or "no message",
               f"Measured: {r.get('cycles')} cycles, one triangle each, {min(r.get('bisections', [0]))}-"
-              f"{max(r.get('bisections', [0]))} bisections, relative change of T <= {short(r.get('max_residual', 0))}"]
+              f"{max(r.get('bisections', [0]))} bisections, relative change of T <= {sci(r.get('max_residual', 0))}"]
     sl = results["slivers"]
     i = sl["iterations"]
-    rows_.append(f"converges: {sl['final_pressure_Pa'] / 1e6:.4f} MPa, {short(sl['lame_error'])} from Lamé (asserted <= 2e-3; "
-                 f"the structured coarse mesh {short(results['large_steps']['1500']['lame_error'])}), non-uniformity "
-                 f"{100 * sl['non_uniformity']:.1f} %, Signorini to {short(max(-sl['min_gap_m'], sl['max_gap_in_contact_m']))} m; "
+    rows_.append(f"converges: {sl['final_pressure_Pa'] / 1e6:.4f} MPa, {sci(sl['lame_error'])} from Lamé (asserted <= 2e-3; "
+                 f"the structured coarse mesh {sci(results['large_steps']['1500']['lame_error'])}), non-uniformity "
+                 f"{100 * sl['non_uniformity']:.1f} %, Signorini to {sci(max(-sl['min_gap_m'], sl['max_gap_in_contact_m']))} m; "
                  f"at most {i['dc_iterations']['max']:.0f} DC iterations and {i['psor_sweeps']['max']:.0f} PSOR sweeps per step |")
     return rows_
 

@@ -33,7 +33,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools", "bench", "oracles"))
 
-from checklib import (KELVIN_AT_0C, check, doc_quotes, finish, four_phases, header_quotes, r_squared,  # noqa: E402
+from checklib import (KELVIN_AT_0C, celsius, check, doc_quotes, finish, four_phases, header_quotes, r_squared,  # noqa: E402
                       record, run_scene, sleeve_geometry, sleeve_outputs)
 from lame import lame_pressure  # noqa: E402
 
@@ -106,8 +106,6 @@ def main():
           f"{figures['gvar']['all_austenite_step']} against {figures['circular']['all_austenite_step']}")
 
     # The scene's header quotes this run (and the circular one) as printed.
-    def C(kelvin):
-        return kelvin - KELVIN_AT_0C
     gs, cs = gvar["summary"], circ["summary"]
     counts = [int(r["contact_nodes"]) for r in hist]
     flips = [i for i in range(contact + 1, len(hist)) if counts[i] != counts[i - 1]]
@@ -116,12 +114,12 @@ def main():
     def t_final(run):  # the time of the first step all austenite
         return float(run["history"][run["summary"]["austenite_step"] - 1]["t"])
     header_quotes("edp/scenes/sleeve-circular-gvar.edp", [
-        f"contact at step {gs['first_contact_step']} (inner {C(gs['T_inner_first_contact']):.1f} C",
-        f"warmer than sleeve-circular's {C(cs['T_inner_first_contact']):.1f} C",
+        f"contact at step {gs['first_contact_step']} (inner {celsius(gs['T_inner_first_contact']):.1f} C",
+        f"warmer than sleeve-circular's {celsius(cs['T_inner_first_contact']):.1f} C",
         f"from {float(hist[flips[0]]['t']) if flips else 0:.1f} s to {float(hist[flips[-1]]['t']) if flips else 0:.1f} s "
         f"the contact set flips between every other bore node ({flip_counts[0]}) and all {flip_counts[-1]}",
-        f"from {C(T[onset]):.1f} C", f"reached earlier ({t_final(gvar):.1f} s instead of {t_final(circ):.1f} s, at inner "
-        f"{C(gs['T_inner_austenite']):.1f} C), the same {fg / 1e9:.3f} GPa", f"(R^2 {r2:.2f} of the mean pressure)"])
+        f"from {celsius(T[onset]):.1f} C", f"reached earlier ({t_final(gvar):.1f} s instead of {t_final(circ):.1f} s, at inner "
+        f"{celsius(gs['T_inner_austenite']):.1f} C), the same {fg / 1e9:.3f} GPa", f"(R^2 {r2:.2f} of the mean pressure)"])
 
     ell = sleeve_outputs(run_scene("sleeve-elliptic", "paper-elliptic", *PAPER, "-quiet", "1", "-vtkevery", "0"))
     _, p_minor = point_curve(ell, "x_axis")

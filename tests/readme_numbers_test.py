@@ -23,7 +23,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checklib import ROOT, TEST_RESULTS, check, finish, header_quotes, record, rows, run_scene_captured, summary_of  # noqa: E402
+from checklib import ROOT, celsius, check, finish, header_quotes, record, rows, run_scene_captured, summary_of  # noqa: E402
 
 sys.path.insert(0, os.path.join(ROOT, "tools", "docs"))
 from paper_scale_metrics import curve  # noqa: E402
@@ -35,13 +35,9 @@ def run(scene, name, *args):
     return out if done.returncode == 0 else None
 
 
-def celsius(kelvin):
-    return kelvin - 273.15
-
-
 def headers():
     """The scene headers' numbers against the runs they describe (fixed steps, -tol 0, where they quote
-    step numbers; else the defaults); returns the phrases."""
+    step numbers; else the defaults); returns the phrases and sleeve-life's default run (its folder)."""
     phrases = {}
     fixed = ["-tol", "0"]
     radial = run("sleeve-radial", "header-radial", *fixed)
@@ -89,7 +85,7 @@ def headers():
             f"austenite again at {float(history[a - 1]['T_mean']):.1f} K",
             f"{summary_of(ring)['heat_dissipated']:.0f} J/m dissipated"]
         header_quotes("edp/scenes/free-ring.edp", phrases["free-ring"])
-    return phrases
+    return phrases, life
 
 
 def main():
@@ -128,11 +124,11 @@ def main():
     for what, phrases in quoted.items():
         for phrase in phrases:
             check(phrase in flat, f"README quotes the {what} run as the run gives it: '{phrase}'")
-    quoted["headers"] = headers()
+    quoted["headers"], life_default = headers()
     # sleeve-life's service at k = 2 (its default: headers' run), 1 and 0 MPa
-    life = {"2": os.path.join(TEST_RESULTS, "readme-header-life")}
+    life = {"2": life_default}
     life.update({k: run("sleeve-life", f"life-k{k}", "-dissipation", f"{k}e6" if k != "0" else "0") for k in ("1", "0")})
-    if all(life.values()) and os.path.exists(os.path.join(life["2"], "summary.json")):
+    if all(life.values()):
         cold = {k: summary_of(out)["pressure_at_service_Tmin"] / 1e6 for k, out in life.items()}
         quoted["sleeve-life"] = [
             f"heating to clamp ({summary_of(life['2'])['clamp_pressure'] / 1e6:.2f} MPa)",

@@ -30,7 +30,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from checklib import TEST_RESULTS, check, finish, header_quotes, record  # noqa: E402
+from checklib import TEST_RESULTS, celsius, check, finish, header_quotes, record, sci  # noqa: E402
 from checklib import run_scene_captured as run, summary_of as summary  # noqa: E402
 
 CIRCLE = ["-pipeA", "0.0505", "-pipeB", "0.0505"]
@@ -49,27 +49,21 @@ def rel(a, b):
     return abs(a - b) / abs(b)
 
 
-def short(x):
-    """x to two digits as the header prints it: 5.5e-4, not 5.5e-04."""
-    return f"{x:.1e}".replace("e-0", "e-")
-
-
 def defaults_quoted():
     """The header's figures of the scene's defaults (the elliptic pipe, k = 2 MPa), from a run of them."""
     s = ran(*run("sleeve-life-2d", "life2d-defaults", *QUICK), "sleeve-life-2d at its defaults")
     if not s:
         return None, []
-    C = lambda kelvin: kelvin - 273.15  # noqa: E731
     return s, [f"the free ring turns martensite at {s['T_forward_free']:.2f} K and back at {s['T_reverse_free']:.2f} K",
                f"clearance at installation {s['installation_clearance'] * 1e6:.2f} um at "
                f"{s['installation_clearance_angle_deg']:.0f} deg",
                f"and {(s['installation_clearance_max'] - s['installation_clearance']) * 1e6:.0f} um more on the minor axis",
-               f"first contact at step {s['first_contact_step']} (inner {C(s['T_inner_first_contact']):.1f} C), all "
+               f"first contact at step {s['first_contact_step']} (inner {celsius(s['T_inner_first_contact']):.1f} C), all "
                f"austenite from step {s['austenite_step']}",
                f"clamping {s['clamp_pressure'] / 1e6:.3f} MPa, non-uniformity {100 * s['clamp_non_uniformity']:.2f} %, "
                f"smallest nodal pressure {s['clamp_pressure_node_min'] / 1e6:.2f} MPa on the minor axis "
                f"({s['clamp_pressure_node_min_angle_deg']:.0f} deg)",
-               f"the service (inner surface down to {C(s['service_T_inner_min']):.1f} C) leaves it austenite: the pressure "
+               f"the service (inner surface down to {celsius(s['service_T_inner_min']):.1f} C) leaves it austenite: the pressure "
                f"stays {s['service_pressure_min'] / 1e6:.3f} MPa",
                f"{s['n_steps']} steps (1 s), {s['dc_iterations_mean']:.2f} DC iterations a step (at most "
                f"{s['dc_iterations_max']})"]
@@ -102,7 +96,7 @@ def main():
               f"{radial['clamp_pressure'] / 1e6:.4f} MPa: relative {c['clamp_pressure']:.2g} (6 layers), "
               f"{f['clamp_pressure']:.2g} (9 layers); service {c['service_pressure_min']:.2g}, "
               f"{f['service_pressure_min']:.2g}")
-        header.append(f"clamping within {short(c['clamp_pressure'])} (6 layers) and {short(f['clamp_pressure'])} "
+        header.append(f"clamping within {sci(c['clamp_pressure'])} (6 layers) and {sci(f['clamp_pressure'])} "
                       "(9 layers) of the radial nr 80's")
         check(c["installation_clearance"] <= 1e-3 and f["installation_clearance"] <= 1e-3,
               f"clearance at installation against the radial life's {radial['installation_clearance'] * 1e6:.3f} um: "

@@ -20,7 +20,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from checklib import ROOT, check, finish, header_quotes, record, run_scene, sleeve_outputs  # noqa: E402
+from checklib import ROOT, check, finish, header_quotes, record, run_scene, sci, sleeve_outputs  # noqa: E402
 
 POINTS = ("x_axis", "diagonal", "y_axis")
 COMMON = ["-mesh", "meshes/sleeve-coarse.msh", "-steps", "600", "-quiet", "1"]
@@ -34,11 +34,6 @@ def spreads(points):
         if max(p) > 0:
             result.append(((max(p) - min(p)) / max(p), int(r["step"])))
     return result
-
-
-def order(x):
-    """x to one digit, as the headers print it: 5e-4, not 5e-04."""
-    return f"{x:.0e}".replace("e-0", "e-")
 
 
 def header_check():
@@ -56,11 +51,11 @@ def header_check():
               f"contact step ({first['step']})")
     worst = max(double)[0]
     bound = 10.0 ** math.ceil(math.log10(worst)) if worst > 0 else 0
-    phrases = [f"the same force to {order(bound)}",
+    phrases = [f"the same force to {sci(bound, 1)}",
                f"at the first contact step ({paper[0][1]}) they are {100 * paper[0][0]:.0f} % apart, "
-               f"{order(paper[-1][0])} at the end",
+               f"{sci(paper[-1][0], 1)} at the end",
                f"(-scale reduced: at its first contact step ({reduced[0][1]}), {100 * reduced[0][0]:.0f} % apart, "
-               f"{order(reduced[-1][0])} at the end"]
+               f"{sci(reduced[-1][0], 1)} at the end"]
     header_quotes("edp/scenes/sleeve-circular-single.edp", phrases)
     # README's table gives the double precision mesh's spread as a bound: it must hold
     with open(os.path.join(ROOT, "README.md"), encoding="utf-8") as f:

@@ -34,7 +34,7 @@ import time
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools", "bench", "oracles"))
 
-from checklib import REDUCED, ROOT, TEST_RESULTS, check, finish, header_quotes, record, rows, sleeve_outputs  # noqa: E402
+from checklib import REDUCED, ROOT, TEST_RESULTS, celsius, check, finish, header_quotes, record, rows, sci, sleeve_outputs  # noqa: E402
 from lame import lame_pressure  # noqa: E402
 
 COARSE = ["-mesh", "meshes/sleeve-coarse.msh", "-steps", "600", "-quiet", "1"]
@@ -73,27 +73,20 @@ def same_files(a, b, files):
     return all(open(os.path.join(a, f), "rb").read() == open(os.path.join(b, f), "rb").read() for f in files)
 
 
-def short(x):
-    """x to two digits as the headers print it: 4.6e-4, not 4.6e-04."""
-    return f"{x:.1e}".replace("e-0", "e-")
-
-
 def headers(outputs, results, lame_stress, lame_strain):
     """The variants' headers quote their default runs (checklib.header_quotes); returns the phrases."""
-    def C(kelvin):
-        return kelvin - 273.15
     circ, ps = outputs["header-circular"]["summary"], outputs["header-plane-stress"]["summary"]
     im, se = outputs["header-imposed"], outputs["header-superellipse"]
     asym = outputs["header-asymmetric"]["summary"]
     phrases = {}
     phrases["sleeve-plane-stress"] = [
-        f"later contact (step {ps['first_contact_step']} at inner {C(ps['T_inner_first_contact']):.1f} C instead of step "
-        f"{circ['first_contact_step']} at {C(circ['T_inner_first_contact']):.1f} C",
-        f"austenite for good from step {ps['austenite_step']} ({C(ps['T_inner_austenite']):.1f} C) instead of "
+        f"later contact (step {ps['first_contact_step']} at inner {celsius(ps['T_inner_first_contact']):.1f} C instead of step "
+        f"{circ['first_contact_step']} at {celsius(circ['T_inner_first_contact']):.1f} C",
+        f"austenite for good from step {ps['austenite_step']} ({celsius(ps['T_inner_austenite']):.1f} C) instead of "
         f"{circ['austenite_step']}; final pressure {ps['final_pressure_mean'] / 1e6:.3f} MPa (plane strain "
         f"{circ['final_pressure_mean'] / 1e6:.3f}), Lame plane stress {lame_stress / 1e6:.3f} MPa: "
-        f"{short(abs(ps['final_pressure_mean'] / lame_stress - 1))} off (plane strain "
-        f"{short(abs(circ['final_pressure_mean'] / lame_strain - 1))} off its Lame value)"]
+        f"{sci(abs(ps['final_pressure_mean'] / lame_stress - 1))} off (plane strain "
+        f"{sci(abs(circ['final_pressure_mean'] / lame_strain - 1))} off its Lame value)"]
     counts = [int(r["contact_nodes"]) for r in im["history"]]
     m = im["summary"]["contact_nodes"]
     first = next(i for i, c in enumerate(counts) if c > 0)
@@ -101,7 +94,7 @@ def headers(outputs, results, lame_stress, lame_strain):
     flips = sorted(set(counts[i] for i in partial))
     phrases["sleeve-imposed-pipe-temperature"] = [
         f"up to the first contact (step {im['summary']['first_contact_step']}, inner "
-        f"{C(im['summary']['T_inner_first_contact']):.1f} C)",
+        f"{celsius(im['summary']['T_inner_first_contact']):.1f} C)",
         f"the contact set alternates for {partial[-1] - partial[0] + 1} steps ({' or '.join(map(str, flips))} of the "
         f"{m} nodes every other step", f"then stays whole from step {partial[-1] + 2}",
         f"from step {im['summary']['austenite_step']} instead of {circ['austenite_step']} (sleeve-circular); the same "
@@ -112,17 +105,17 @@ def headers(outputs, results, lame_stress, lame_strain):
     at = {a: float(min(final, key=lambda r: abs(float(r["angle_deg"]) - a))["pressure"]) for a in (0, 45, 90)}
     s = se["summary"]
     phrases["sleeve-superellipse"] = [
-        f"the corners bite first (step {s['first_contact_step']}, inner {C(s['T_inner_first_contact']):.1f} C; the circle: "
+        f"the corners bite first (step {s['first_contact_step']}, inner {celsius(s['T_inner_first_contact']):.1f} C; the circle: "
         f"step {circ['first_contact_step']})", f"reaches the axes at step {axes}, all {s['final_nodes_in_contact']} nodes "
         f"touch at the end: final mean {s['final_pressure_mean'] / 1e6:.2f} MPa (circle {circ['final_pressure_mean'] / 1e6:.2f}), "
         f"highest {float(top['pressure']) / 1e6:.1f} MPa at {float(top['angle_deg']):.0f} and {90 - float(top['angle_deg']):.0f} "
         f"deg, {at[45] / 1e6:.1f} at the corners, {max(at[0], at[90]) / 1e6:.1f} on the axes"]
     trace = number(r"smallest trace {}", results["header-asymmetric"][2])
     phrases["sleeve-asymmetric-law"] = [
-        f"first contact at step {asym['first_contact_step']} (inner {C(asym['T_inner_first_contact']):.1f} C), austenite for "
+        f"first contact at step {asym['first_contact_step']} (inner {celsius(asym['T_inner_first_contact']):.1f} C), austenite for "
         f"good from step {asym['austenite_step']}, final {asym['final_pressure_mean'] / 1e6:.3f} MPa",
         f"chatter warning ({asym['reversal_steps']} reversal steps, {asym['pressure_zigzag_steps']} zigzags)",
-        f"smallest trace {short(trace)} over the run"]
+        f"smallest trace {sci(trace)} over the run"]
     for name, quoted in phrases.items():
         header_quotes(f"edp/variants/{name}.edp", quoted)
     return phrases
