@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -135,7 +136,27 @@ inline Eigen::VectorXi nested_dissection_order(const SparseMatrix& a) {
   return perm;
 }
 
-class SpdFactor {
+// What the step solver asks of a solver of A x = b (plugin/core/step_newton.hpp): the solve in two
+// halves, x = backward(forward(b)), between which the condensed contact reads the contact rows'
+// motion and adds the reactions' load (contact_step.hpp). SpdFactor's halves are those of its LDL';
+// ExternalSolver's are a copy and a solve the caller provides (a distributed solve on MPI ranks).
+class LinearSolver {
+ public:
+  virtual ~LinearSolver() = default;
+  virtual int size() const = 0;
+  // z = the forward half of b (z resized; no allocation once it has the size)
+  virtual void forward_into(span<const double> b, Eigen::VectorXd& z) const = 0;
+  // x = the backward half of z (z may be overwritten)
+  virtual void backward_in_place(Eigen::VectorXd& z, span<double> x) const = 0;
+  // x = A^-1 b, the two halves in turn
+  void solve(span<const double> b, span<double> x) const {
+    Eigen::VectorXd z;
+    forward_into(b, z);
+    backward_in_place(z, x);
+  }
+};
+
+class SpdFactor : public LinearSolver {
  public:
   // Unknowns from which the nested-dissection ordering replaces AMD (docs/parameters.md,
   // "back-solve ordering"): on the scene's matrices the two fill L alike at 26k-53k unknowns, the
@@ -194,7 +215,7 @@ class SpdFactor {
     n_ = (int)a.rows();
     inverse_diagonal_ = d.cwiseInverse();  // 1 / d_i, the values D^-1 z multiplies by
   }
-  int size() const { return n_; }
+  int size() const override { return n_; }
   // x = A^-1 b (x and b may not alias).
   void solve(span<const double> b, span<double> x) const {
     check_size(b.size(), "right-hand side");
@@ -219,7 +240,7 @@ class SpdFactor {
   // The same on the caller's work vector z, for a caller that solves many times (the step
   // solver): no allocation once z has the size, the permutations by index (Eigen's permutation
   // products' values); z is overwritten by backward_in_place.
-  void forward_into(span<const double> b, Eigen::VectorXd& z) const {
+  void forward_into(span<const double> b, Eigen::VectorXd& z) const override {
     check_size(b.size(), "right-hand side");
     z.resize(n_);
     const auto& perm = permutation_p();
@@ -233,7 +254,7 @@ class SpdFactor {
     }
     unit_lower_solve_in_place(factor_l(), zz);
   }
-  void backward_in_place(Eigen::VectorXd& z, span<double> x) const {
+  void backward_in_place(Eigen::VectorXd& z, span<double> x) const override {
     check_size((std::size_t)z.size(), "forward-solved vector");
     check_size(x.size(), "solution");
     // D^-1 z as Eigen's inverse diagonal product forms it, (1 / d_i) z_i (vectorD() is a copy).
@@ -375,6 +396,75 @@ inline DelassusFactor delassus_factor(const SpdFactor& a, const SparseMatrix& h,
   result.w = Eigen::MatrixXd::Zero(k, k);
   for (std::size_t i = 0; i < wanted.size(); ++i)
     for (std::size_t j = 0; j < wanted.size(); ++j) result.w(wanted[i], wanted[j]) = compact(i, j);
+  return result;
+}
+
+// A solver of A x = b that the caller provides (the distributed solves of FreeFEM's ffddm on MPI
+// ranks, edp/solvers/distributed.idp): its forward half is the identity (z = b), its backward half
+// the caller's solve x = A^-1 z. Its contact problem is delassus_from_columns's. The solve is bound
+// for the duration of a call (plugin/glue/step.cpp StepSolveFractionBy) and is empty otherwise.
+class ExternalSolver : public LinearSolver {
+ public:
+  using Solve = std::function<void(const Eigen::VectorXd& b, span<double> x)>;
+  explicit ExternalSolver(int n, Solve solve = nullptr) : n_(n), solve_(std::move(solve)) {
+    if (n < 0) throw std::invalid_argument("an external solver of " + std::to_string(n) + " unknowns");
+  }
+  void bind(Solve solve) { solve_ = std::move(solve); }
+  int size() const override { return n_; }
+  void forward_into(span<const double> b, Eigen::VectorXd& z) const override {
+    check_size(b.size(), "right-hand side");
+    z = Eigen::Map<const Eigen::VectorXd>(b.begin(), n_);
+  }
+  void backward_in_place(Eigen::VectorXd& z, span<double> x) const override {
+    check_size((std::size_t)z.size(), "forward-solved vector");
+    check_size(x.size(), "solution");
+    if (!solve_) throw std::logic_error("an external solver called with no solve bound to it");
+    solve_(z, x);
+  }
+
+ private:
+  void check_size(std::size_t got, const char* what) const {
+    if (got != (std::size_t)n_)
+      throw std::invalid_argument(std::string("external solver: ") + what + " has " + std::to_string(got) +
+                                  " values for " + std::to_string(n_) + " unknowns");
+  }
+  int n_;
+  Solve solve_;
+};
+
+// The contact problem of an ExternalSolver (whose forward half is the identity): Y = S H_rows'
+// (so that z + Y r = b + S H' r before the backward solve) and, in place of D^-1 Y, the columns
+// C = S A^-1 S H_rows' the caller solved for (n x rows: so that C' b = H S A^-1 b for every b with
+// S b = b, the step solver's right sides), with W = H S A^-1 S H' given (k x k, the caller's, from
+// the same columns). normal_only: the even rows of H only (frictionless (n, t) pairs), as
+// delassus_factor's. The same DelassusFactor every contact routine reads.
+inline DelassusFactor delassus_from_columns(const SparseMatrix& h, span<const double> free, const Eigen::MatrixXd& columns,
+                                            const Eigen::MatrixXd& w, bool normal_only) {
+  const Eigen::Index n = h.cols(), k = h.rows();
+  if ((Eigen::Index)free.size() != n)
+    throw std::invalid_argument("free has " + std::to_string(free.size()) + " values for " + std::to_string(n) + " dofs");
+  if (normal_only && k % 2 != 0) throw std::invalid_argument("normal_only needs (n, t) pairs of rows");
+  DelassusFactor result;
+  for (int r = 0; r < (int)k; r += normal_only ? 2 : 1) result.rows.push_back(r);
+  const Eigen::Index c = (Eigen::Index)result.rows.size();
+  if (columns.rows() != n || columns.cols() != c)
+    throw std::invalid_argument("the contact's columns are " + std::to_string(columns.rows()) + " x " +
+                                std::to_string(columns.cols()) + ", for " + std::to_string(n) + " dofs and " +
+                                std::to_string(c) + " contact rows");
+  if (w.rows() != k || w.cols() != k)
+    throw std::invalid_argument("W is " + std::to_string(w.rows()) + " x " + std::to_string(w.cols()) + " for " +
+                                std::to_string(k) + " contact rows");
+  if (!columns.allFinite() || !w.allFinite()) throw std::invalid_argument("the contact's columns or W hold a value that is not finite");
+  Eigen::Map<const Eigen::VectorXd> mask(free.begin(), n);
+  const SparseMatrix ht = h.transpose();
+  std::vector<Eigen::Triplet<double, int>> t;
+  for (Eigen::Index j = 0; j < c; ++j)
+    for (SparseMatrix::InnerIterator it(ht, result.rows[(std::size_t)j]); it; ++it)
+      if (mask[it.row()] != 0.0) t.emplace_back((int)it.row(), (int)j, it.value() * mask[it.row()]);
+  result.y.resize((int)n, (int)c);
+  result.y.setFromTriplets(t.begin(), t.end());
+  result.y_scaled = columns.sparseView();
+  result.w = w;
   return result;
 }
 

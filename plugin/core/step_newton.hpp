@@ -85,7 +85,7 @@ namespace sma {
 // What stays fixed over a time step (the operators over a whole run).
 struct StepProblem {
   // Heat: T = heat^-1 (heat_rhs + heat_mask .* latent (beta - b_start)).
-  const SpdFactor* heat = nullptr;
+  const LinearSolver* heat = nullptr;
   Eigen::VectorXd heat_rhs, heat_mask;
   SparseMatrix latent;  // nodes x points: int s phi_i (the P0 -> P1 load)
   double latent_scale = 1.0;  // rho L / dt
@@ -93,7 +93,7 @@ struct StepProblem {
   // Mechanics: rhs = (f + B s) .* free, tr e = (B' u) ./ area. B is the script's: with a
   // transformation direction D (edp/lib/elasticity.idp, PhaseDirection) it loads s D and this
   // "trace" is the driving strain D:e; nothing here depends on D but the laminate modulus.
-  const SpdFactor* stiffness = nullptr;
+  const LinearSolver* stiffness = nullptr;
   const DelassusFactor* contact = nullptr;  // null: no contact
   SparseMatrix load;                        // dofs x points: B
   Eigen::VectorXd area, force, free;

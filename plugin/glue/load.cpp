@@ -47,6 +47,11 @@
 //   long SpdDelassusAddCompliance(long handle, real[int,int] C, real[int,int] W)
 //       adds a second deformable body's compliance C (k x k, W's layout) to the slot's W (an
 //       elastic pipe: sparse_spd.hpp add_obstacle_compliance); W receives the new W + C.
+//   long SpdExternal(long n, long handle)   a slot (< 0: a new one) whose solver of n unknowns is
+//       the script's, given at each StepSolveFractionBy (sparse_spd.hpp ExternalSolver)
+//   long SpdDelassusColumns(long handle, matrix H, real[] free, real[int,int] W, real[int,int] C,
+//                           long normalOnly)   the external slot's contact problem from the columns
+//       C = S A^-1 S H' (dofs x the rows formed) and W the script solved for.
 //   long SpdContactStep(long handle, real[] rhs, real[int,int] contactTable, real[] tangentFree,
 //                       real[] [omega, tol, maxit, polish], real[] r, real[] u, real[] info)
 //       one condensed contact global step (plugin/core/contact_step.hpp): the free motion of the
@@ -71,6 +76,10 @@
 //       not converge at the step's start (the caller's fall-back; not one at its residual's floor,
 //       stats[15]). A step that does not converge returns stats[0] = 0, and
 //   string StepFailureMessage(long)   says why ("" after a converged step).
+//   long StepSolveFractionBy(heatSolve, stiffnessSolve, settings, data, contactTable, contact, chi,
+//                            T, u, stats)   StepSolveFraction whose heat and stiffness slots are
+//       SpdExternal's: their solves are the two script functions, func real f(real[int] & x)
+//       (x = A^-1 x in place), bound for the call (the distributed run's ffddm solves).
 //   long StepFractionRecord(real[] [rho L / dt, rho, a, L, T0, Tc], matrix Q, matrix Interp,
 //                           real[] chi, real[] T, real[] b, real[] load, real[] s)
 //       the record of a step the step solver solved (plugin/core/step_record.hpp): load =
@@ -180,7 +189,7 @@
 // the file that the launchers read before FreeFEM starts (tools/launcher-common.sh): FreeFEM
 // compiles a whole script before running any of it, so a plugin that lacks a function the scene
 // calls stops at compilation ("The Identifier ... does not exist") before plugin.idp's check runs.
-#define SMA_PLUGIN_VERSION 26
+#define SMA_PLUGIN_VERSION 27
 #define SMA_STRINGIFY(x) #x
 #define SMA_VERSION_STAMP(v) "sma-plugin-version " SMA_STRINGIFY(v) ";"
 extern "C" __attribute__((used, visibility("default")))

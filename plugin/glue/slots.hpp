@@ -20,7 +20,14 @@ std::uint64_t NewVersion();
 // on it.
 struct FactorSlot {
   sma::SpdFactor factor;
+  // SpdExternal's: a solve the script gives at each StepSolveFractionBy (the distributed run's),
+  // which then stands for the factor (solver()); its contact problem SpdDelassusColumns's.
+  std::unique_ptr<sma::ExternalSolver> external;
   std::unique_ptr<sma::DelassusFactor> contact;
+  const sma::LinearSolver* solver() const {
+    if (external) return external.get();
+    return &factor;
+  }
   // Renewed at every change of the factor or its contact operator, unique over all slots: the
   // step solver's contact memo (StepProblem::mechanics_version) holds for one version only.
   std::uint64_t version = 0;

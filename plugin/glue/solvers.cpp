@@ -59,9 +59,50 @@ long SpdFactorize(Matrice_Creuse<double>* const& M, long const& handle) {
       slot = (long)Factors().size() - 1;
     }
     SlotAt(slot).factor.factorize(a);
+    SlotAt(slot).external.reset();  // (the factor stands for the slot's solver again)
     SlotAt(slot).contact.reset();  // its W was of the previous matrix
     SlotAt(slot).changed();
     return slot;
+  });
+}
+
+// A slot whose solver is the script's (sparse_spd.hpp ExternalSolver, n unknowns): the distributed
+// run's stiffness and heat solves for the step solver (StepSolveFractionBy binds them).
+long SpdExternal(long const& n, long const& handle) {
+  return guarded("SpdExternal", [&] {
+    long slot = handle;
+    if (slot < 0) {
+      Factors().push_back(std::make_unique<FactorSlot>());
+      slot = (long)Factors().size() - 1;
+    }
+    FactorSlot& s = SlotAt(slot);
+    s.external = std::make_unique<sma::ExternalSolver>((int)n);
+    s.contact.reset();
+    s.changed();
+    return slot;
+  });
+}
+
+// The contact problem of an external slot from the columns C = S A^-1 S H_rows' (dofs x the rows
+// formed: all, or the even ones with normalOnly) and W = H S A^-1 S H' the script solved for
+// (sparse_spd.hpp delassus_from_columns).
+long SpdDelassusColumns(long const& handle, Matrice_Creuse<double>* const& H, KN<double>* const& free,
+                        KNM<double>* const& W, KNM<double>* const& columns, long const& normalOnly) {
+  return guarded("SpdDelassusColumns", [&] {
+    FactorSlot& slot = SlotAt(handle);
+    if (!slot.external) throw std::invalid_argument("slot " + std::to_string(handle) + " has no external solver (SpdExternal first)");
+    Eigen::MatrixXd c(columns->N(), columns->M()), w(W->N(), W->M());
+    for (long i = 0; i < columns->N(); ++i)
+      for (long j = 0; j < columns->M(); ++j) c(i, j) = (*columns)(i, j);
+    for (long i = 0; i < W->N(); ++i)
+      for (long j = 0; j < W->M(); ++j) w(i, j) = (*W)(i, j);
+    const sma::SparseMatrix h = ToEigen(H);
+    if (h.cols() != slot.external->size())
+      throw std::invalid_argument("H has " + std::to_string(h.cols()) + " columns for an external solver of " +
+                                  std::to_string(slot.external->size()) + " unknowns");
+    slot.contact = std::make_unique<sma::DelassusFactor>(sma::delassus_from_columns(h, cview(free), c, w, normalOnly != 0));
+    slot.changed();
+    return (long)w.rows();
   });
 }
 
@@ -403,6 +444,9 @@ void AddSolverFunctions() {
              new OneOperator7_<long, Matrice_Creuse<double>*, A, KNM<double>*, A, A, A, A>(PsorFull));
   Global.Add("SpdFactorize", "(", new OneOperator2_<long, Matrice_Creuse<double>*, long>(SpdFactorize));
   Global.Add("SpdSolve", "(", new OneOperator3_<long, long, A, A>(SpdSolve));
+  Global.Add("SpdExternal", "(", new OneOperator2_<long, long, long>(SpdExternal));
+  Global.Add("SpdDelassusColumns", "(",
+             new OneOperator6_<long, long, Matrice_Creuse<double>*, A, KNM<double>*, KNM<double>*, long>(SpdDelassusColumns));
   Global.Add("SpdDelassus", "(",
              new OneOperator5_<long, long, Matrice_Creuse<double>*, A, KNM<double>*, long>(SpdDelassus));
   Global.Add("SpdDelassusAddCompliance", "(",

@@ -92,8 +92,8 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
     sma::StepProblem& p = *StepSlots()[slot];
     FactorSlot& heatSlot = SlotAt(lrint((*settings)[1]));
     FactorSlot& mechSlot = SlotAt(lrint((*settings)[2]));
-    p.heat = &heatSlot.factor;
-    p.stiffness = &mechSlot.factor;
+    p.heat = heatSlot.solver();
+    p.stiffness = mechSlot.solver();
     p.contact = mechSlot.contact.get();
     p.mechanics_version = mechSlot.version;
     p.law = sma::ThermalLaw{(*settings)[3], (*settings)[4], (*settings)[5], (*settings)[6], (*settings)[7]};
@@ -181,6 +181,92 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
   });
 }
 
+// StepSolveFractionBy(heatSolve, stiffnessSolve, settings, data, table, contact, chi, T, u, stats):
+// StepSolveFraction with the heat and stiffness slots' solves the script's (SpdExternal slots; the
+// distributed run's, edp/solvers/distributed.idp): each is a FreeFEM function
+//   func real solve(real[int] & x)   x = A^-1 x in place (its value unused)
+// called by the step solver at each of its solves, on every rank alike. The functions are bound for
+// the call only. Its expression is compiled as FreeFEM's optimisers' (plugin/seq/ffnewuoa.cpp): a
+// block of two local arrays, each function applied to its own.
+class StepSolveFractionByOperator : public OneOperator {
+ public:
+  // One of the script's solves: x = A^-1 b through the function and its array.
+  struct ScriptSolve {
+    Stack stack;
+    Expression call, array;
+    void operator()(const Eigen::VectorXd& b, sma::span<double> x) const {
+      KN<double>* a = GetAny<KN<double>*>((*array)(stack));
+      a->resize(b.size());
+      for (Eigen::Index i = 0; i < b.size(); ++i) (*a)[i] = b[i];
+      (*call)(stack);
+      WhereStackOfPtr2Free(stack)->clean();
+      if (a->N() != (long)x.size())
+        throw std::invalid_argument("a script's solve returned " + std::to_string(a->N()) + " values for " +
+                                    std::to_string(x.size()) + " unknowns");
+      for (std::size_t i = 0; i < x.size(); ++i) x[i] = (*a)[(long)i];
+    }
+  };
+
+  class Call : public E_F0mps {
+   public:
+    Expression arrays[8];
+    C_F0 openHeat, heatArray, openStiffness, stiffnessArray, close;
+    Expression heatCall, stiffnessCall;
+
+    explicit Call(const basicAC_F0& args) {
+      Block::open(currentblock);  // the two arrays the functions are applied to
+      C_F0 size(args[2], "n");
+      openHeat = currentblock->NewVar<LocalVariable>("the heat solve's array", atype<KN<double>*>(), size);
+      heatArray = currentblock->Find("the heat solve's array");
+      openStiffness = currentblock->NewVar<LocalVariable>("the stiffness solve's array", atype<KN<double>*>(), size);
+      stiffnessArray = currentblock->Find("the stiffness solve's array");
+      const Polymorphic* heat = dynamic_cast<const Polymorphic*>(args[0].LeftValue());
+      const Polymorphic* stiffness = dynamic_cast<const Polymorphic*>(args[1].LeftValue());
+      if (!heat || !stiffness) CompileError("StepSolveFractionBy: its first two arguments are functions, func real f(real[int] & x)");
+      heatCall = to<double>(C_F0(heat, "(", heatArray));
+      stiffnessCall = to<double>(C_F0(stiffness, "(", stiffnessArray));
+      for (int k = 0; k < 8; ++k) arrays[k] = k == 2 ? to<KNM<double>*>(args[2 + k]) : to<KN<double>*>(args[2 + k]);
+      close = C_F0((Expression)Block::snewclose(currentblock), atype<void>());
+    }
+
+    AnyType operator()(Stack stack) const {
+      WhereStackOfPtr2Free(stack) = new StackOfPtr2Free(stack);
+      openHeat.eval(stack);
+      openStiffness.eval(stack);
+      KN<double>* a[8];
+      KNM<double>* table = nullptr;
+      for (int k = 0; k < 8; ++k) {
+        if (k == 2) table = GetAny<KNM<double>*>((*arrays[k])(stack));
+        else a[k] = GetAny<KN<double>*>((*arrays[k])(stack));
+      }
+      long its = guarded("StepSolveFractionBy", [&] {
+        if (a[0]->N() < 3) throw std::invalid_argument("settings must have 20 to 23 values");
+        FactorSlot& heatSlot = SlotAt(lrint((*a[0])[1]));
+        FactorSlot& mechSlot = SlotAt(lrint((*a[0])[2]));
+        if (!heatSlot.external || !mechSlot.external)
+          throw std::invalid_argument("the heat and stiffness slots must be external (SpdExternal)");
+        // unbound again however the step ends
+        struct Unbind {
+          FactorSlot &heat, &mech;
+          ~Unbind() { heat.external->bind(nullptr); mech.external->bind(nullptr); }
+        } unbind{heatSlot, mechSlot};
+        heatSlot.external->bind(ScriptSolve{stack, heatCall, heatArray});
+        mechSlot.external->bind(ScriptSolve{stack, stiffnessCall, stiffnessArray});
+        return StepSolveFraction(a[0], a[1], table, a[3], a[4], a[5], a[6], a[7]);
+      });
+      close.eval(stack);
+      return SetAny<long>(its);
+    }
+    operator aType() const { return atype<long>(); }
+  };
+
+  E_F0* code(const basicAC_F0& args) const { return new Call(args); }
+  StepSolveFractionByOperator()
+      : OneOperator(atype<long>(), atype<Polymorphic*>(), atype<Polymorphic*>(), atype<KN<double>*>(), atype<KN<double>*>(),
+                    atype<KNM<double>*>(), atype<KN<double>*>(), atype<KN<double>*>(), atype<KN<double>*>(),
+                    atype<KN<double>*>(), atype<KN<double>*>()) {}
+};
+
 // The reason the last StepSolveFraction stopped unconverged ("" after a converged step); the
 // argument is unused (FreeFEM's string functions of no argument need a Stack-less form).
 string* StepFailureMessage(Stack stack, long const&) { return NewString(stack, StepFailure()); }
@@ -195,6 +281,7 @@ void AddStepFunctions() {
                                Matrice_Creuse<double>*>(StepOperatorsSet));
   Global.Add("StepSolveFraction", "(",
              new OneOperator8_<long, A, A, KNM<double>*, A, A, A, A, A>(StepSolveFraction));
+  Global.Add("StepSolveFractionBy", "(", new StepSolveFractionByOperator);
   Global.Add("StepFailureMessage", "(", new OneOperator1s_<S, long>(StepFailureMessage));
 }
 

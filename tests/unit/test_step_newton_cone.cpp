@@ -291,4 +291,93 @@ TEST(StepNewtonCone, ToleranceBelowTheContactsFloorStopsThere) {
   }
 }
 
+// The step on solvers the caller provides (sparse_spd.hpp ExternalSolver, delassus_from_columns:
+// the distributed run's ffddm solves, edp/solvers/distributed.idp) equals the step on the plugin's
+// factors: here the caller's solves are dense LDL' of the supports-eliminated matrices (an
+// independent computation), C = S K^-1 S H' and W = H C from them. On the cone with friction (a
+// support blocking one tangential motion) and on the frictionless 2D layout (normal rows only).
+TEST(StepNewtonCone, ExternalSolversGiveTheFactorsStep) {
+  for (const int rows : {3, 2}) {
+    const double mu = rows == 3 ? 0.3 : 0.0;
+    ConeBody body;
+    body.blocked = {3 * 2 + 1};
+    body.build(7, rows);
+    const bool normal_only = mu == 0;
+    std::vector<double> mask(body.free.data(), body.free.data() + body.dofs());
+    if (normal_only) body.contact = sma::delassus_factor(body.stiffness, body.contact_rows(rows), mask, true);
+    // S K S + (I - S): the supports' rows and columns those of the identity
+    const Eigen::VectorXd s = body.free;
+    Eigen::MatrixXd eliminated = s.asDiagonal() * Eigen::MatrixXd(body.K) * s.asDiagonal();
+    eliminated.diagonal() += (Eigen::VectorXd::Ones(body.dofs()) - s);
+    const Eigen::LDLT<Eigen::MatrixXd> k_dense(eliminated);
+    const Eigen::LDLT<Eigen::MatrixXd> heat_dense{Eigen::MatrixXd(body.heat_matrix)};
+    int stiffness_calls = 0;
+    sma::ExternalSolver stiffness(body.dofs(), [&](const Eigen::VectorXd& b, sma::span<double> x) {
+      ++stiffness_calls;
+      EXPECT_EQ(b.cwiseProduct(Eigen::VectorXd::Ones(body.dofs()) - s).lpNorm<Eigen::Infinity>(), 0.0)
+          << "a right side nonzero on a support row";
+      Eigen::Map<Eigen::VectorXd>(x.begin(), body.dofs()) = k_dense.solve(b);
+    });
+    sma::ExternalSolver heat(body.points, [&](const Eigen::VectorXd& b, sma::span<double> x) {
+      Eigen::Map<Eigen::VectorXd>(x.begin(), body.points) = heat_dense.solve(b);
+    });
+    const sma::SparseMatrix H = body.contact_rows(rows);
+    const Eigen::MatrixXd Ht = Eigen::MatrixXd(H).transpose();
+    std::vector<int> formed;
+    for (int r = 0; r < H.rows(); r += normal_only ? 2 : 1) formed.push_back(r);
+    Eigen::MatrixXd columns(body.dofs(), (Eigen::Index)formed.size());
+    for (std::size_t j = 0; j < formed.size(); ++j)
+      columns.col((Eigen::Index)j) = s.asDiagonal() * k_dense.solve(s.asDiagonal() * Ht.col(formed[j]));
+    Eigen::MatrixXd W = Eigen::MatrixXd::Zero(H.rows(), H.rows());
+    for (std::size_t j = 0; j < formed.size(); ++j)
+      for (std::size_t i = 0; i < formed.size(); ++i)
+        W(formed[i], formed[j]) = (Eigen::MatrixXd(H).row(formed[i]) * columns.col((Eigen::Index)j))(0, 0);
+    const sma::DelassusFactor external_contact = sma::delassus_from_columns(H, mask, columns, W, normal_only);
+    EXPECT_LE((external_contact.w - body.contact.w).lpNorm<Eigen::Infinity>(), 1e-10 * body.contact.w.lpNorm<Eigen::Infinity>());
+
+    const auto step = [&](bool external, Eigen::VectorXd& chi, Eigen::VectorXd& r, Eigen::VectorXd& T, Eigen::VectorXd& u) {
+      sma::StepProblem p = body.problem(rows, mu);
+      p.heat_rhs *= 209.0 / 250.0;  // (1 K below T0: the points part-transform, as in the floor's case)
+      if (external) {
+        p.stiffness = &stiffness;
+        p.heat = &heat;
+        p.contact = &external_contact;
+      }
+      sma::StepSettings set;
+      set.tol = 1e-10;
+      chi = Eigen::VectorXd::Zero(body.points);
+      r = Eigen::VectorXd::Zero(rows * body.m);
+      Eigen::VectorXd g = Eigen::VectorXd::Zero(body.m);
+      T.resize(body.points);
+      u.resize(body.dofs());
+      return sma::solve_fraction_step(p, set, chi, r, g, T, u);
+    };
+    Eigen::VectorXd chi_f, r_f, T_f, u_f, chi_e, r_e, T_e, u_e;
+    const sma::StepResult factors = step(false, chi_f, r_f, T_f, u_f);
+    const sma::StepResult external = step(true, chi_e, r_e, T_e, u_e);
+    ASSERT_TRUE(factors.converged) << factors.failure;
+    ASSERT_TRUE(external.converged) << external.failure;
+    EXPECT_GT(stiffness_calls, 0);
+    EXPECT_GT(chi_f.lpNorm<Eigen::Infinity>(), 0.0) << "rows " << rows << ": nothing transforms, the law is not tested";
+    EXPECT_GT(r_f.lpNorm<Eigen::Infinity>(), 0.0) << "rows " << rows << ": no contact";
+    EXPECT_LE((chi_e - chi_f).lpNorm<Eigen::Infinity>(), 1e-8) << "rows " << rows;
+    EXPECT_LE((u_e - u_f).lpNorm<Eigen::Infinity>(), 1e-8 * u_f.lpNorm<Eigen::Infinity>()) << "rows " << rows;
+    EXPECT_LE((r_e - r_f).lpNorm<Eigen::Infinity>(), 1e-8 * r_f.lpNorm<Eigen::Infinity>()) << "rows " << rows;
+    EXPECT_LE((T_e - T_f).lpNorm<Eigen::Infinity>(), 1e-10 * T_f.lpNorm<Eigen::Infinity>()) << "rows " << rows;
+  }
+}
+
+// An external solver called with no solve bound, or with a vector of the wrong size, says so.
+TEST(StepNewtonCone, ExternalSolverRefusesWhatItCannotSolve) {
+  sma::ExternalSolver unbound(3);
+  Eigen::VectorXd z = Eigen::VectorXd::Ones(3), x(3);
+  EXPECT_THROW(unbound.backward_in_place(z, sma::span<double>(x.data(), 3)), std::logic_error);
+  Eigen::VectorXd wrong = Eigen::VectorXd::Ones(2);
+  EXPECT_THROW(unbound.forward_into(sma::span<const double>(wrong.data(), 2), z), std::invalid_argument);
+  const sma::SparseMatrix H(2, 3);
+  std::vector<double> free(3, 1.0);
+  EXPECT_THROW(sma::delassus_from_columns(H, free, Eigen::MatrixXd::Zero(3, 1), Eigen::MatrixXd::Zero(2, 2), false),
+               std::invalid_argument);  // 1 column for 2 rows
+}
+
 }  // namespace
