@@ -161,7 +161,7 @@ def concurrent(tmp, measured):
         os.kill(pid, signal.SIGCONT)
     first_output, _ = first.communicate(timeout=300)
     errors = errors_of(second)
-    owner_named = bool(errors) and f"in use by another run (process " in errors[0]
+    owner_named = bool(errors) and "in use by another run (process " in errors[0]
     check(locked and held and second.returncode == 1 and len(errors) == 1 and owner_named,
           f"a second run into a folder in use fails naming the first's process: {errors[:1]}")
     why = complete(out, steps=1500)

@@ -58,7 +58,7 @@ def main():
         chatter.append((nr, run["summary"]["reversal_steps"], run["summary"]["pressure_zigzag_steps"]))
     order = math.log(errors[0] / errors[-1]) / math.log(LEVELS[-1][0] / LEVELS[0][0])
     check(all(x > y for x, y in zip(errors, errors[1:])) and order >= 1.0,
-          f"2D, dt and h refined together: transient l1 " + ", ".join(
+          "2D, dt and h refined together: transient l1 " + ", ".join(
               f"{100 * e:.2f} % (nr {lv[0]})" for e, lv in zip(errors, LEVELS))
           + f" decrease, observed order {order:.2f} >= 1")
     check(all(rev == 0 and zig == 0 for _, rev, zig in chatter),

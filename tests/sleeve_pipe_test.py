@@ -148,7 +148,7 @@ def two_d():
     shares = [errors[(m, "wall")] / errors[(m, "rigid")] - 1 for m, _ in levels]
     figures.update(wall_orders=wall_orders, wall_shares=shares)
     check(min(wall_orders) >= 1.8 and max(shares) - min(shares) < 0.05,
-          f"2D compound cylinders, hollow steel pipe (wall 4.5 to 5.05 cm) on 6, 12, 18 layers: errors "
+          "2D compound cylinders, hollow steel pipe (wall 4.5 to 5.05 cm) on 6, 12, 18 layers: errors "
           + ", ".join(f"{errors[(m, 'wall')]:.3e}" for m, _ in levels) + " at orders "
           + ", ".join(f"{o:.2f}" for o in wall_orders) + " (>= 1.8); the wall's share of the error "
           + ", ".join(f"{x:.3f}" for x in shares) + " the same at every level (within 0.05): the pipe refined with the ring")

@@ -106,7 +106,7 @@ def main():
     errors = [curve_error(r["history"], reference["history"])["l1_transient"] for r in runs[:-1]]
     order = math.log2(diffs[0] / diffs[-1]) / (len(diffs) - 1)
     print("study: successive transient l1 differences " + ", ".join(f"{d:.2e}" for d in diffs)
-          + f"; against nr 320: " + ", ".join(f"{e:.2e}" for e in errors) + f"; observed order {order:.2f}")
+          + "; against nr 320: " + ", ".join(f"{e:.2e}" for e in errors) + f"; observed order {order:.2f}")
     check(all(x > y for x, y in zip(diffs, diffs[1:])) and order >= 0.9,
           f"nr and dt refined together: successive transient l1 differences decrease "
           f"({', '.join(f'{x:.2e}' for x in diffs)}), observed order {order:.2f} >= 0.9 (first order expected: "

@@ -24,7 +24,6 @@ superellipse's default on its own mesh), two runs at a time. Runs into build/tes
 Writes results/checks/variant_sleeve.json.
 """
 import concurrent.futures
-import json
 import os
 import re
 import subprocess
@@ -34,7 +33,7 @@ import time
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools", "bench", "oracles"))
 
-from checklib import REDUCED, ROOT, TEST_RESULTS, celsius, check, finish, header_quotes, record, rows, sci, sleeve_outputs  # noqa: E402
+from checklib import REDUCED, ROOT, TEST_RESULTS, celsius, check, finish, header_quotes, record, sci, sleeve_outputs  # noqa: E402
 from lame import lame_pressure  # noqa: E402
 
 COARSE = ["-mesh", "meshes/sleeve-coarse.msh", "-steps", "600", "-quiet", "1"]
