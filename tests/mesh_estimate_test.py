@@ -41,7 +41,8 @@ sleeve-radial at nr 40 (against their companions on 9 layers, 20 elements):
     -meshestimate 1 -meshlevels 3): summary.json's mesh_error_estimate_stage per column of bend.csv
     (moment, normal_force_total) is |v - v_H| / |v| / (2^k - 1) of the three runs' last rows, k the
     order their differences' ratio gives in [0.25, 4] or 1 outside (the moment's differences do not
-    shrink there: order 1 taken, and said), recomputed here to 1e-9.
+    shrink there: order 1 taken, and said), and <column>_curve the whole curve's, max_i |v_i - v_H,i|
+    / max_i |v_i| / (2^k - 1) over the increments (the same loads in both runs), recomputed here to 1e-9.
 Writes results/checks/mesh_estimate.json.
 """
 import atexit
@@ -105,7 +106,8 @@ def stage(data):
         return
     s = summary_of(out)
     estimate = s["mesh_error_estimate_stage"]
-    last = [rows(os.path.join(out, *p, "bend.csv"))[-1] for p in ((), ("mesh-estimate",), ("mesh-estimate", "mesh-estimate"))]
+    curves = [rows(os.path.join(out, *p, "bend.csv")) for p in ((), ("mesh-estimate",), ("mesh-estimate", "mesh-estimate"))]
+    last = [c[-1] for c in curves]
     n, n2, n3 = s["mesh_estimate_layers"], s["mesh_estimate_coarse_layers"], s["mesh_estimate_coarsest_layers"]
     worst, orders, taken = 0.0, {}, []
     for name in ("moment", "normal_force_total"):
@@ -115,16 +117,20 @@ def stage(data):
             k = 1.0
             taken.append(name)
         again = abs(v - v2) / abs(v) / ((n / n2) ** k - 1)
+        # the whole curve: the largest difference over the increments (the same loads) over its largest value
+        fine, coarse = ([float(r[name]) for r in c] for c in curves[:2])
+        curve = max(abs(a - b) for a, b in zip(fine, coarse)) / max(abs(a) for a in fine) / ((n / n2) ** k - 1)
         orders[name] = k
-        worst = max(worst, abs(estimate[name] / again - 1), abs(estimate[name + "_order"] / k - 1))
+        worst = max(worst, abs(estimate[name] / again - 1), abs(estimate[name + "_order"] / k - 1),
+                    abs(estimate[name + "_curve"] / curve - 1))
     said = [name for name in orders if f"the bending's {name} shows no order" in proc.stdout]
     data["stage"] = {"estimate": estimate, "orders": orders, "order_1_taken": taken}
     check(estimate["name"] == "bending" and estimate["increments"] == 2 and (n, n2, n3) == (4, 2, 1) and worst < 1e-9
           and said == taken,
-          f"the bending's final values' mesh estimate (4, 2, 1): moment {estimate['moment']:.3e} (order "
-          f"{orders['moment']:.3f}), normal force {estimate['normal_force_total']:.3e} (order "
-          f"{orders['normal_force_total']:.3f}), recomputed from the three bend.csv to {worst:.1e}; order 1 taken for "
-          f"{taken or 'none'}, said for {said or 'none'}")
+          f"the bending's mesh estimate (4, 2, 1): moment {estimate['moment']:.3e} (curve {estimate['moment_curve']:.3e}, "
+          f"order {orders['moment']:.3f}), normal force {estimate['normal_force_total']:.3e} (curve "
+          f"{estimate['normal_force_total_curve']:.3e}, order {orders['normal_force_total']:.3f}), recomputed from the "
+          f"three bend.csv to {worst:.1e}; order 1 taken for {taken or 'none'}, said for {said or 'none'}")
 
 
 def balanced(scene, folder, lo, hi, *args):
