@@ -12,10 +12,12 @@
    components likewise equals the two files' difference; sleeve-axisymmetric with friction along z
    (-mu 0.2) likewise on its bore-final.csv (which gains tangential_density with friction).
 4. The stage after the clamping: the companion makes it in a quarter of the increments, and the
-   bound of the stage's final values is the difference of the two curves' last rows over the run's
-   (recomputed here, 1e-9). sleeve-3d's frictional bending (-length 0.02 -mu 0.2 -bend 1e-2
-   -bendsteps 8): the final moment's bound is above its error against a run of 32 increments
-   (the clamping's part is 1e-10); the companion's curve has 2 rows. sleeve-axisymmetric's pull-out (-pullout 1e-3
+   bound of the stage's final values is the difference of the two curves' last rows over the run's,
+   the curve's (<column>_curve) their largest difference at the loads both took over the run's
+   largest value (both recomputed here, 1e-9). sleeve-3d's frictional bending (-length 0.02 -mu 0.2
+   -bend 1e-2 -bendsteps 8): the final moment's bound is above its error against a run of 32
+   increments (the clamping's part is 1e-10), the curve's above the curve's error at the companion's 2
+   angles (rows 4 and 8; between them nothing is bounded: the error at every angle is recorded). sleeve-axisymmetric's pull-out (-pullout 1e-3
    -pullsteps 4, the run of 3.) likewise on pullout.csv. The bending's first sliding is bracketed
    by its increment: summary.json's angle before it is bend.csv's row before (0: the clamped state).
 5. A run without -timeestimate leaves no companion of an earlier run in its folder.
@@ -51,10 +53,17 @@ def stage_bound(figures, what, out, bound, file, names, increments, companion_in
           f"{what}: {stage['increments']} increments ({increments}), the companion's {stage['companion_increments']} "
           f"({companion_increments}) = the rows of its {file}")
     for name in names:
-        mine, theirs = column(out, name, file)[-1], column(companion, name, file)[-1]
-        again = abs(mine - theirs) / abs(mine)
-        check(abs(stage[name] - again) <= 1e-9 * again + 1e-15, f"{what} {name}: the bound {stage[name]:.6e} = the "
-              f"last rows' difference over the run's {again:.6e}")
+        curve, companion_curve = column(out, name, file), column(companion, name, file)
+        again = abs(curve[-1] - companion_curve[-1]) / abs(curve[-1])
+        # the curve's: at the loads both took (the companion's row j of m is the run's row j n / m when whole)
+        n, m = len(curve), len(companion_curve)
+        shared = [abs(curve[j * n // m - 1] - companion_curve[j - 1]) for j in range(1, m + 1) if j * n % m == 0]
+        curve_again = max(shared) / max(abs(v) for v in curve)
+        check(abs(stage[name] - again) <= 1e-9 * again + 1e-15
+              and abs(stage[name + "_curve"] - curve_again) <= 1e-9 * curve_again + 1e-15,
+              f"{what} {name}: the bound {stage[name]:.6e} = the last rows' difference over the run's {again:.6e}; the "
+              f"curve's {stage[name + '_curve']:.6e} = its largest difference at the {len(shared)} shared loads over its "
+              f"largest value {curve_again:.6e}")
 
 
 def run(scene, tag, *args):
@@ -108,6 +117,18 @@ def main():
     figures["bending"]["moment_error_against_32_increments"] = actual
     check(0 < actual <= boundb["stage"]["moment"], f"bending: the final moment's error against 32 increments "
           f"{actual:.3e} <= its bound {boundb['stage']['moment']:.3e}")
+    # the curve at the companion's loads (rows 4 and 8 of 8, rows 16 and 32 of 32: the same angles);
+    # between them it bounds nothing: the whole curve's error is recorded, not checked (the first
+    # increment's, at a load the companion did not take, is the largest: measured 7.5e-4 against the
+    # shared loads' bound 5.8e-4)
+    moments, moments_ref = column(outb, "moment", "bend.csv"), column(refb, "moment", "bend.csv")
+    scale = max(abs(a) for a in moments)
+    errors = [abs(a - moments_ref[4 * (i + 1) - 1]) / scale for i, a in enumerate(moments)]
+    at_shared = max(errors[3], errors[7])
+    figures["bending"]["moment_curve_error_against_32_increments"] = {"shared_loads": at_shared, "every_load": max(errors)}
+    check(0 < at_shared <= boundb["stage"]["moment_curve"], f"bending: the moment curve's error against 32 increments at "
+          f"the companion's loads {at_shared:.3e} <= its bound {boundb['stage']['moment_curve']:.3e} (at every load: "
+          f"{max(errors):.3e}, not bounded)")
     bent, angles = summary_of(outb)["bending"], column(outb, "angle", "bend.csv")
     k = angles.index(bent["first_sliding_angle"])
     check(bent["first_sliding_angle_before"] == (angles[k - 1] if k > 0 else 0)
