@@ -31,6 +31,10 @@ but where newton is named:
   sequential first step; 2 ranks for 3 layers (a slab of at least 2 layers each), named by rank 0
   (docs/errors.md's cases, run by bad_inputs_test, add Coulomb's cone and 3 ranks for 2 layers); an ffddm
   option this run does not set (-ffddm_overlap 2), by every rank; each exits non-zero within 60 s;
+- an error of one rank alone (rank 1 of tests/edp/rank_alone_error.edp) is said once, the run fails;
+- checkpoints: a run stopped after step 50 (-checkpoint 20 -stopafter 50, said on its last line,
+  exit 4) and resumed (-resume 1, from step 40) writes the uninterrupted run's history.csv and
+  contact-final.csv byte for byte, on 2 ranks with newton;
 - a TERM to tools/ff-mpi mid-run stops every rank (exit 143, said once, no summary.json published);
   a solve at its iteration limit (-ffddm_max_it 1) stops every rank (MPI_Abort), said; every run's
   temporary folders are gone after all of them (each run's own TMPDIR folder, removed by
@@ -251,6 +255,30 @@ def main():
         check(code not in (None, 0) and len(errors) == 1 and errors[0].startswith(message) and not alive and not others,
               f"refused, {name}: exit {code} in {seconds:.1f} s, {len(errors)} error line(s) {errors[:1]}, a rank left "
               f"running: {alive}, other lines {others[:3]}")
+    # A failure of one rank alone (FreeFem++-mpi writes a script's cerr to the standard output,
+    # which tools/ff-mpi does not show for ranks but 0): said once, the run failed
+    code, output, _ = run_in_session([os.path.join(ROOT, "tools", "ff-mpi"), "2", "tests/edp/rank_alone_error.edp"], 60,
+                                     cwd=ROOT, env=ENV)
+    errors = [line for line in output.splitlines() if line.startswith("error:")]
+    check(code == 1 and errors == ["error: rank 1 alone failed (tests/edp/rank_alone_error.edp)"],
+          f"an error of rank 1 alone: exit {code} (1), said {errors}")
+    # Checkpoints on the ranks: a run stopped after step 50 (-checkpoint 20 -stopafter 50) and
+    # resumed (-resume 1) writes the uninterrupted run's history.csv and final contact, byte for
+    # byte (the checkpoint holds the solves' GMRES starts too), on 2 ranks with newton
+    whole, parted = out + "-np2-newton-round", out + "-np2-resumed"
+    stop_code, stop_output, _, _ = ranks_run(2, parted, *SMALL, "-checkpoint", "20", "-stopafter", "50")
+    resume_code, resume_output, _, _ = ranks_run(2, parted, *SMALL, "-resume", "1")
+    same = {name: resume_code == 0 and open(os.path.join(whole, name), "rb").read() == open(os.path.join(parted, name), "rb").read()
+            for name in ("history.csv", "contact-final.csv")}
+    said = [line for line in stop_output.splitlines() if line.strip()]
+    check(stop_code == 4 and said[-1:] == ["sleeve-3d: stopped after step 50 (-stopafter 50; -resume 1 continues from the "
+                                          "last checkpoint)"] and resume_code == 0 and all(same.values())
+          and summary_of(parted).get("resumed_from_step") == 40,
+          f"checkpoints on 2 ranks: stopped after step 50 (exit {stop_code}, 4; its last line {said[-1:]}), resumed "
+          f"(exit {resume_code}) from step {summary_of(parted).get('resumed_from_step') if resume_code == 0 else None} "
+          f"(40): the uninterrupted run's files byte for byte {same}")
+    if resume_code != 0:
+        print(resume_output[-2000:])
     # A TERM to tools/ff-mpi mid-run (a job manager's stop): every rank stopped, said once, nothing
     # of the run's summary published.
     stopped = out + "-stopped"

@@ -124,11 +124,14 @@ require_tmpdir() {
 }
 
 # FreeFEM's output without the call trace it prints after a script's own exit: exit(1) after an
-# `error:` line, or exit(0) (-help, -checkonly): "  current line = N", " call F  at  line N",
-# "exit(N)", " err code N ,  mpirank 0", six lines after every error that said nothing the error
-# line does not. After any other exit (an execution error, an internal one) the trace is kept: it
-# says where. (FreeFem++-mpi's first line reads "  current line = N mpirank R / S".)
+# `error:` line, exit(0) (-help, -checkonly) or exit(4) after a sleeve run's "stopped after step N"
+# (-stopafter): "  current line = N", " call F  at  line N", "exit(N)", " err code N ,  mpirank 0",
+# six lines after every error that said nothing the error line does not. After any other exit (an
+# execution error, an internal one) the trace is kept: it says where. (FreeFem++-mpi's first line
+# reads "  current line = N mpirank R / S".) With SMA_SAID naming a file, the error lines also go
+# there (tools/ff-mpi's record of what rank 0 said).
 untraced='
+  BEGIN { said = ENVIRON["SMA_SAID"] }
   function trailer(line) {
     return line ~ /^  current line = [0-9]+( mpirank [0-9]+ \/ [0-9]+)?$/ || line ~ /^ call .* at  line [0-9]+$/ \
       || line ~ /^exit\([0-9]+\)$/ || line ~ /^ err code [0-9]+ ,  mpirank [0-9]+$/
@@ -137,9 +140,10 @@ untraced='
     for (i = 1; i <= n; i++) print held[i]
     n = 0
     print
+    if (said != "" && $0 ~ /^error: /) { print >> said; fflush(said) }
     fflush() }
   END { clean = 0
-    for (i = 1; i <= n; i++) if (held[i] ~ /^ err code [01] ,/) clean = 1
+    for (i = 1; i <= n; i++) if (held[i] ~ /^ err code [014] ,/) clean = 1
     if (!clean) for (i = 1; i <= n; i++) print held[i] }'
 
 # The filter reads a line at a time: mawk, Debian's awk, fills its input buffer before it hands a
