@@ -48,7 +48,15 @@ sma::SparseMatrix ToEigen(Matrice_Creuse<double>* M) {
 
 namespace {
 
-sma::SpdFactor& FactorAt(long handle) { return SlotAt(handle).factor; }
+// The slot's factor; a slot whose solver is the script's (SpdExternal) has none, said.
+FactorSlot& FactoredSlotAt(long handle) {
+  FactorSlot& slot = SlotAt(handle);
+  if (slot.external)
+    throw std::invalid_argument("slot " + std::to_string(handle) + " holds the script's solver (SpdExternal): no factor "
+                                "to solve with here (StepSolveFractionBy takes its solves)");
+  return slot;
+}
+sma::SpdFactor& FactorAt(long handle) { return FactoredSlotAt(handle).factor; }
 
 long SpdFactorize(Matrice_Creuse<double>* const& M, long const& handle) {
   return guarded("SpdFactorize", [&] {
@@ -157,7 +165,7 @@ long SpdDelassusAddCompliance(long const& handle, KNM<double>* const& C, KNM<dou
 // right-hand side and `rows` reactions per node; returns the slot. The settings as the core's.
 FactorSlot& ContactSlotChecked(long handle, KN<double>* rhs, KNM<double>* table, long columns, const char* layout,
                                KN<double>* settings, KN<double>* r, long rows, KN<double>* info) {
-  FactorSlot& slot = SlotAt(handle);
+  FactorSlot& slot = FactoredSlotAt(handle);
   if (!slot.contact) throw std::invalid_argument("no contact problem in slot " + std::to_string(handle) + " (SpdDelassus first)");
   const long m = table->N(), n = slot.factor.size();
   if (m > 0 && table->M() != columns) throw std::invalid_argument(std::string("the table must have ") + layout);
