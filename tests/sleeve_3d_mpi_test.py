@@ -44,6 +44,8 @@ but where newton is named:
   of the clamping equal the sequential newton run's to 1e-7 (measured 4.5e-9), on the round pipe
   and on Coulomb's cone (-nt 8 -mu 0.2 -pipeB 0.0504: the elliptic pipe with friction and free
   ends), with the laws (gap, complementarity, the cone) at every bore node;
+- -meshestimate 1 -timeestimate 1 on 2 ranks (rank 0 runs the companions, the sequential scene):
+  the mesh estimate equals the sequential run's to 1e-6 (relative), the time bound is made;
 - make run SCENE=sleeve-3d NP=2 runs it into the folder it names and draws its figures;
 - the MPI entry sets the scene's name and defaults (sleeveScene, sleeveDefaults) as the scene does.
 Writes results/checks/sleeve_3d_mpi.json.
@@ -216,6 +218,23 @@ def main():
                   f"{summary['contact_complementarity_max']:.1e}, cone excess {summary.get('contact_cone_excess_max')}, "
                   f"equilibrium {summary['equilibrium_residual']:.1e}, largest solve residual "
                   f"{summary['distributed']['residual_max']:.1e}")
+    # The estimates on the ranks: rank 0 runs their companions (the sequential scene) and makes
+    # them; the mesh estimate equals the sequential run's to the solves' tolerance
+    est_args = ["-nr", "2", "-nt", "4", "-length", "0.04", "-quiet", "1", "-meshestimate", "1", "-timeestimate", "1"]
+    seq_est = sequential(out + "-seq-estimates", *est_args, solver="newton")
+    code, output, _, _ = ranks_run(2, out + "-np2-estimates", *est_args)
+    if code != 0:
+        print(output[-2000:])
+    mine, theirs = (summary_of(seq_est), summary_of(out + "-np2-estimates") if code == 0 else {})
+    mesh_gap = (abs(theirs["mesh_error_estimate"] / mine["mesh_error_estimate"] - 1)
+                if code == 0 and theirs.get("mesh_error_estimate") else None)
+    bound = theirs.get("time_error_bound") or {}
+    newton["estimates"] = {"mesh_relative_difference": mesh_gap, "time_bound": bound}
+    check(code == 0 and mesh_gap is not None and mesh_gap <= 1e-6 and bound.get("companion_steps", 0) > 0
+          and bound.get("pressure", 1) <= 1e-3,
+          f"-meshestimate 1 -timeestimate 1 on 2 ranks: exit {code}; the mesh estimate {theirs.get('mesh_error_estimate')} "
+          f"against the sequential run's {mine['mesh_error_estimate']} (relative difference {mesh_gap}, <= 1e-6); the "
+          f"time bound {bound.get('pressure')} from a companion of {bound.get('companion_steps')} steps")
     record_runs = {"geneo": geneo}
     for ranks, folder in runs.items():
         summary = summary_of(folder)
