@@ -58,14 +58,17 @@ FactorSlot& FactoredSlotAt(long handle) {
 }
 sma::SpdFactor& FactorAt(long handle) { return FactoredSlotAt(handle).factor; }
 
+// The slot `handle`, or a new one when it is < 0.
+long SlotOrNew(long handle) {
+  if (handle >= 0) return handle;
+  Factors().push_back(std::make_unique<FactorSlot>());
+  return (long)Factors().size() - 1;
+}
+
 long SpdFactorize(Matrice_Creuse<double>* const& M, long const& handle) {
   return guarded("SpdFactorize", [&] {
     const sma::SparseMatrix a = ToEigen(M);
-    long slot = handle;
-    if (slot < 0) {
-      Factors().push_back(std::make_unique<FactorSlot>());
-      slot = (long)Factors().size() - 1;
-    }
+    const long slot = SlotOrNew(handle);
     SlotAt(slot).factor.factorize(a);
     SlotAt(slot).external.reset();  // (the factor stands for the slot's solver again)
     SlotAt(slot).contact.reset();  // its W was of the previous matrix
@@ -78,11 +81,7 @@ long SpdFactorize(Matrice_Creuse<double>* const& M, long const& handle) {
 // run's stiffness and heat solves for the step solver (StepSolveFractionBy binds them).
 long SpdExternal(long const& n, long const& handle) {
   return guarded("SpdExternal", [&] {
-    long slot = handle;
-    if (slot < 0) {
-      Factors().push_back(std::make_unique<FactorSlot>());
-      slot = (long)Factors().size() - 1;
-    }
+    const long slot = SlotOrNew(handle);
     FactorSlot& s = SlotAt(slot);
     s.external = std::make_unique<sma::ExternalSolver>((int)n);
     s.contact.reset();
