@@ -22,6 +22,7 @@ but where newton is named:
   sliding nodes equal), with the cone and complementarity at every node;
 - the contact's columns S K^-1 S H': kept on 2 ranks (their product a global step), solved for on
   1 rank (-ddmcolumnsmb 0: a second solve a global step, about twice the solves), the same curves;
+  each rank keeps a slice of their rows (on 2 ranks half the size a rank);
 - the solves: every one within 100 x -ddmtol of the scene's matrix (summary.json "distributed"
   residual_max); on one rank the preconditioner is the exact inverse (at most one GMRES iteration
   a solve), on two more than one (the subdomains are used);
@@ -43,7 +44,8 @@ but where newton is named:
   heat solves the ranks' distributed ones): on 2 ranks the curves and the bore's forces at the end
   of the clamping equal the sequential newton run's to 1e-7 (measured 4.5e-9), on the round pipe
   and on Coulomb's cone (-nt 8 -mu 0.2 -pipeB 0.0504: the elliptic pipe with friction and free
-  ends), with the laws (gap, complementarity, the cone) at every bore node;
+  ends), with the laws (gap, complementarity, the cone) at every bore node; the contact's product
+  C' z the ranks' slices' sum, or without kept columns (-ddmcolumnsmb 0) a distributed solve, the same;
 - -meshestimate 1 -timeestimate 1 on 2 ranks (rank 0 runs the companions, the sequential scene):
   the mesh estimate equals the sequential run's to 1e-6 (relative), the time bound is made;
 - make run SCENE=sleeve-3d NP=2 runs it into the folder it names and draws its figures;
@@ -187,16 +189,27 @@ def main():
           f"the contact's columns: kept on 2 ranks ({kept['contact_columns_mb']:.3f} MB), solved for on 1 rank with "
           f"-ddmcolumnsmb 0: {solved['stiffness_solves']} stiffness solves against {kept['stiffness_solves']} (a second a "
           "global step), the curves equal above")
+    # each rank keeps a slice of their rows: half of the whole on 2 ranks (the largest slice, dofs
+    # rounded up)
+    share = kept["contact_columns_mb"] / solved["contact_columns_mb"]
+    check(0.5 <= share <= 0.51, f"the contact's columns on 2 ranks: {kept['contact_columns_mb']:.4f} MB a rank against "
+          f"{solved['contact_columns_mb']:.4f} MB on 1 (a share {share:.4f}: each rank a slice of their rows, 0.5 to 0.51)")
     # The newton step solver on the ranks (the default, as the sequential scene's): the plugin's
     # step solver with its stiffness and heat solves the ranks' (plugin StepSolveFractionBy), the
     # contact's problem the kept columns; the sequential newton run's curves and bore forces to the
     # solves' tolerance (measured 4.5e-9), on the round pipe and on Coulomb's cone (an elliptic
     # pipe with friction and free ends: the clamping the nested loops could not do on the ranks).
-    newton = {}
-    for name, extra in (("the round pipe", []), ("Coulomb's cone", CONE)):
-        tag = "cone" if extra else "round"
-        seq_newton = sequential(f"{out}-seq-newton-{tag}", *SMALL, *extra, solver="newton")
-        folder = f"{out}-np2-newton-{tag}"
+    # The contact's product C' z is the ranks' slices' sum; without kept columns (-ddmcolumnsmb 0) a
+    # distributed solve instead.
+    newton, sequential_newton = {}, {}
+    cases = (("the round pipe", "round", []), ("Coulomb's cone", "cone", CONE),
+             ("the round pipe, no kept columns", "round", ["-ddmcolumnsmb", "0"]))
+    for name, tag, extra in cases:
+        cone = extra == CONE
+        if tag not in sequential_newton:
+            sequential_newton[tag] = sequential(f"{out}-seq-newton-{tag}", *SMALL, *(CONE if cone else []), solver="newton")
+        seq_newton = sequential_newton[tag]
+        folder = f"{out}-np2-newton-{tag}" + ("-solved" if "-ddmcolumnsmb" in extra else "")
         code, output, seconds, _ = ranks_run(2, folder, *SMALL, *extra)
         if code != 0:
             print(output[-3000:])
@@ -205,10 +218,12 @@ def main():
         forces = contact_difference(seq_newton, folder) if code == 0 else None
         newton[name] = {"curves": curves, "bore_forces": forces, "seconds": seconds,
                         "distributed": summary.get("distributed")}
-        check(code == 0 and summary["step_solver"] == "newton" and summary["contact_tangent"] == ("cone" if extra else "e_z")
+        columns = summary.get("distributed", {}).get("contact_columns")
+        check(code == 0 and summary["step_solver"] == "newton" and summary["contact_tangent"] == ("cone" if cone else "e_z")
+              and columns == ("solved" if "-ddmcolumnsmb" in extra else "kept")
               and curves is not None and curves <= 1e-7 and forces is not None and forces <= 1e-7,
               f"newton on 2 ranks, {name}: exit {code}, step solver {summary.get('step_solver')}, tangent "
-              f"{summary.get('contact_tangent')}; the curves within {curves} and the bore's forces within {forces} of the "
+              f"{summary.get('contact_tangent')}, columns {columns}; the curves within {curves} and the bore's forces within {forces} of the "
               "sequential newton run's (<= 1e-7: the solves' tolerance, not the nested loops')")
         if code == 0:
             check(summary["contact_gap_min"] >= -1e-6 and summary["contact_complementarity_max"] <= 1e-6

@@ -25,9 +25,16 @@ namespace sma {
 
 // H S K^-1 b on every contact row, from z = L^-1 P b (SpdFactor::forward): the rows Y stands
 // for; the others (tangential rows of a frictionless problem, whose W rows are 0 and r_t stays 0)
-// are 0.
+// are 0. Columns the caller keeps (DelassusFactor::caller_columns): its product, C' z.
 inline Eigen::VectorXd contact_motion(const DelassusFactor& d, const Eigen::VectorXd& z) {
-  const Eigen::VectorXd motion = d.y_scaled.transpose() * z;
+  Eigen::VectorXd motion;
+  if (d.caller_columns) {
+    if (!d.motion) throw std::logic_error("a contact problem whose columns the caller keeps, used with no product bound to it");
+    motion.resize((Eigen::Index)d.rows.size());
+    d.motion(z, span<double>(motion.data(), (std::size_t)motion.size()));
+  } else {
+    motion = d.y_scaled.transpose() * z;
+  }
   Eigen::VectorXd hu = Eigen::VectorXd::Zero(d.w.rows());
   for (std::size_t j = 0; j < d.rows.size(); ++j) hu[d.rows[j]] = motion[(Eigen::Index)j];
   return hu;

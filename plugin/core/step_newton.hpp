@@ -1125,6 +1125,9 @@ class StepSolver {
         column_of_row_.assign((std::size_t)d.w.rows(), -1);
         for (std::size_t j = 0; j < d.rows.size(); ++j) column_of_row_[(std::size_t)d.rows[j]] = (int)j;
       }
+      // Columns the caller keeps give their whole product at once (one call: the ranks' sum), not
+      // a column's entry a row.
+      if (d.caller_columns) work_.caller_motion = contact_motion(d, z);
       if (cone()) {
         cone_linear(s, z);
         p_.stiffness->backward_in_place(z, span<double>(du.data(), (std::size_t)du.size()));
@@ -1133,7 +1136,7 @@ class StepSolver {
       Eigen::VectorXd& b = work_.moving_motion;
       b.resize(k);
       for (Eigen::Index a = 0; a < k; ++a)  // W dr = dq = -d(H u_free), on the moving rows only
-        b[a] = -contact_motion_at(d, column_of_row_[(std::size_t)s.moving[(std::size_t)a]], z);
+        b[a] = -motion_at(s.moving[(std::size_t)a], z);
       Eigen::VectorXd& x = work_.moving_reaction;
       x.resize(k);
       x = s.statuses.solve(b);  // into x's storage (the same operations as a new vector's)
@@ -1148,6 +1151,13 @@ class StepSolver {
       add_contact_load_sparse(d, dr, z, work_.load);
     }
     p_.stiffness->backward_in_place(z, span<double>(du.data(), (std::size_t)du.size()));
+  }
+
+  // H S K^-1 b at contact row `row`, from the forward half z of b: the factor's entry
+  // (contact_motion_at), or that of the caller's whole product (contact_linear's caller_motion).
+  double motion_at(int row, const Eigen::VectorXd& z) const {
+    if (p_.contact->caller_columns) return work_.caller_motion[row];
+    return contact_motion_at(*p_.contact, column_of_row_[(std::size_t)row], z);
   }
 
   // |w_t| of each node at the cone's solve (w = W r - q): a sliding node's slip, whose size sets how
@@ -1226,7 +1236,7 @@ class StepSolver {
       double v = 0.0;
       for (int c = 0; c < 3; ++c) {
         const double t = s.cone_test[(std::size_t)(3 * a + c)];
-        if (t != 0.0) v -= t * contact_motion_at(d, column_of_row_[(std::size_t)(s.moving[(std::size_t)a] + c)], z);
+        if (t != 0.0) v -= t * motion_at(s.moving[(std::size_t)a] + c, z);
       }
       b[a] = v;
     }
@@ -1754,6 +1764,7 @@ class StepSolver {
     Eigen::VectorXd heat, dT, dalpha, dc, mech, du;
     Eigen::VectorXd heat_z, stiffness_z, load, dr;  // the back-solves' and the contact load's
     Eigen::VectorXd moving_motion, moving_reaction;  // contact_linear's moving rows: -dq and dr
+    Eigen::VectorXd caller_motion;  // contact_linear's H S K^-1 dmech on all rows, by the caller's columns
     Eigen::VectorXd rhs, points;                      // evaluate's heat load and T at the points
   };
 

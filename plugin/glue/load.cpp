@@ -49,9 +49,10 @@
 //       elastic pipe: sparse_spd.hpp add_obstacle_compliance); W receives the new W + C.
 //   long SpdExternal(long n, long handle)   a slot (< 0: a new one) whose solver of n unknowns is
 //       the script's, given at each StepSolveFractionBy (sparse_spd.hpp ExternalSolver)
-//   long SpdDelassusColumns(long handle, matrix H, real[] free, real[int,int] W, real[int,int] C,
-//                           long normalOnly)   the external slot's contact problem from the columns
-//       C = S A^-1 S H' (dofs x the rows formed) and W the script solved for.
+//   long SpdDelassusScriptColumns(long handle, matrix H, real[] free, real[int,int] W, long normalOnly)
+//       the external slot's contact problem: W the script solved for, the columns
+//       C = S A^-1 S H' (dofs x the rows formed) kept by the script, which gives their product
+//       C' z to StepSolveFractionBy (its third function): each MPI rank a slice of their rows.
 //   long SpdContactStep(long handle, real[] rhs, real[int,int] contactTable, real[] tangentFree,
 //                       real[] [omega, tol, maxit, polish], real[] r, real[] u, real[] info)
 //       one condensed contact global step (plugin/core/contact_step.hpp): the free motion of the
@@ -80,6 +81,8 @@
 //                            T, u, stats)   StepSolveFraction whose heat and stiffness slots are
 //       SpdExternal's: their solves are the two script functions, func real f(real[int] & x)
 //       (x = A^-1 x in place), bound for the call (the distributed run's ffddm solves).
+//   long StepSolveFractionBy(heatSolve, stiffnessSolve, contactMotion, settings, ...)   the same on
+//       a contact problem of SpdDelassusScriptColumns: contactMotion(x) makes x (dofs) C' x.
 //   long StepFractionRecord(real[] [rho L / dt, rho, a, L, T0, Tc], matrix Q, matrix Interp,
 //                           real[] chi, real[] T, real[] b, real[] load, real[] s)
 //       the record of a step the step solver solved (plugin/core/step_record.hpp): load =
@@ -189,7 +192,7 @@
 // the file that the launchers read before FreeFEM starts (tools/launcher-common.sh): FreeFEM
 // compiles a whole script before running any of it, so a plugin that lacks a function the scene
 // calls stops at compilation ("The Identifier ... does not exist") before plugin.idp's check runs.
-#define SMA_PLUGIN_VERSION 27
+#define SMA_PLUGIN_VERSION 28
 #define SMA_STRINGIFY(x) #x
 #define SMA_VERSION_STAMP(v) "sma-plugin-version " SMA_STRINGIFY(v) ";"
 extern "C" __attribute__((used, visibility("default")))

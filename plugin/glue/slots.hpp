@@ -21,7 +21,7 @@ std::uint64_t NewVersion();
 struct FactorSlot {
   sma::SpdFactor factor;
   // SpdExternal's: a solve the script gives at each StepSolveFractionBy (the distributed run's),
-  // which then stands for the factor (solver()); its contact problem SpdDelassusColumns's.
+  // which then stands for the factor (solver()); its contact problem SpdDelassusScriptColumns's.
   std::unique_ptr<sma::ExternalSolver> external;
   std::unique_ptr<sma::DelassusFactor> contact;
   const sma::LinearSolver* solver() const {

@@ -90,24 +90,23 @@ long SpdExternal(long const& n, long const& handle) {
   });
 }
 
-// The contact problem of an external slot from the columns C = S A^-1 S H_rows' (dofs x the rows
-// formed: all, or the even ones with normalOnly) and W = H S A^-1 S H' the script solved for
-// (sparse_spd.hpp delassus_from_columns).
-long SpdDelassusColumns(long const& handle, Matrice_Creuse<double>* const& H, KN<double>* const& free,
-                        KNM<double>* const& W, KNM<double>* const& columns, long const& normalOnly) {
-  return guarded("SpdDelassusColumns", [&] {
+// The contact problem of an external slot: W = H S A^-1 S H' the script solved for, the columns
+// C = S A^-1 S H_rows' (dofs x the rows formed: all, or the even ones with normalOnly) kept by the
+// script (sparse_spd.hpp delassus_from_caller_columns), which gives their product C' z as
+// StepSolveFractionBy's third function (the distributed run's: each rank a slice of their rows).
+long SpdDelassusScriptColumns(long const& handle, Matrice_Creuse<double>* const& H, KN<double>* const& free,
+                              KNM<double>* const& W, long const& normalOnly) {
+  return guarded("SpdDelassusScriptColumns", [&] {
     FactorSlot& slot = SlotAt(handle);
     if (!slot.external) throw std::invalid_argument("slot " + std::to_string(handle) + " has no external solver (SpdExternal first)");
-    Eigen::MatrixXd c(columns->N(), columns->M()), w(W->N(), W->M());
-    for (long i = 0; i < columns->N(); ++i)
-      for (long j = 0; j < columns->M(); ++j) c(i, j) = (*columns)(i, j);
+    Eigen::MatrixXd w(W->N(), W->M());
     for (long i = 0; i < W->N(); ++i)
       for (long j = 0; j < W->M(); ++j) w(i, j) = (*W)(i, j);
     const sma::SparseMatrix h = ToEigen(H);
     if (h.cols() != slot.external->size())
       throw std::invalid_argument("H has " + std::to_string(h.cols()) + " columns for an external solver of " +
                                   std::to_string(slot.external->size()) + " unknowns");
-    slot.contact = std::make_unique<sma::DelassusFactor>(sma::delassus_from_columns(h, cview(free), c, w, normalOnly != 0));
+    slot.contact = std::make_unique<sma::DelassusFactor>(sma::delassus_from_caller_columns(h, cview(free), w, normalOnly != 0));
     slot.changed();
     return (long)w.rows();
   });
@@ -452,8 +451,8 @@ void AddSolverFunctions() {
   Global.Add("SpdFactorize", "(", new OneOperator2_<long, Matrice_Creuse<double>*, long>(SpdFactorize));
   Global.Add("SpdSolve", "(", new OneOperator3_<long, long, A, A>(SpdSolve));
   Global.Add("SpdExternal", "(", new OneOperator2_<long, long, long>(SpdExternal));
-  Global.Add("SpdDelassusColumns", "(",
-             new OneOperator6_<long, long, Matrice_Creuse<double>*, A, KNM<double>*, KNM<double>*, long>(SpdDelassusColumns));
+  Global.Add("SpdDelassusScriptColumns", "(",
+             new OneOperator5_<long, long, Matrice_Creuse<double>*, A, KNM<double>*, long>(SpdDelassusScriptColumns));
   Global.Add("SpdDelassus", "(",
              new OneOperator5_<long, long, Matrice_Creuse<double>*, A, KNM<double>*, long>(SpdDelassus));
   Global.Add("SpdDelassusAddCompliance", "(",

@@ -181,16 +181,18 @@ long StepSolveFraction(KN<double>* const& settings, KN<double>* const& data, KNM
   });
 }
 
-// StepSolveFractionBy(heatSolve, stiffnessSolve, settings, data, table, contact, chi, T, u, stats):
-// StepSolveFraction with the heat and stiffness slots' solves the script's (SpdExternal slots; the
-// distributed run's, edp/solvers/distributed.idp): each is a FreeFEM function
+// StepSolveFractionBy(heatSolve, stiffnessSolve, [contactMotion,] settings, data, table, contact,
+// chi, T, u, stats): StepSolveFraction with the heat and stiffness slots' solves the script's
+// (SpdExternal slots; the distributed run's, edp/solvers/distributed.idp): each is a FreeFEM function
 //   func real solve(real[int] & x)   x = A^-1 x in place (its value unused)
-// called by the step solver at each of its solves, on every rank alike. The functions are bound for
-// the call only. Its expression is compiled as FreeFEM's optimisers' (plugin/seq/ffnewuoa.cpp): a
-// block of two local arrays, each function applied to its own.
+// called by the step solver at each of its solves, on every rank alike. With a contact problem
+// whose columns the script keeps (SpdDelassusScriptColumns), contactMotion, of the same form, gives
+// their product: x (dofs values) becomes C' x (one value a formed contact row). The functions are
+// bound for the call only. Its expression is compiled as FreeFEM's optimisers' (plugin/seq/ffnewuoa.cpp):
+// a block of local arrays, each function applied to its own.
 class StepSolveFractionByOperator : public OneOperator {
  public:
-  // One of the script's solves: x = A^-1 b through the function and its array.
+  // One of the script's solves or products: x = f(b) through the function and its array.
   struct ScriptSolve {
     Stack stack;
     Expression call, array;
@@ -209,33 +211,39 @@ class StepSolveFractionByOperator : public OneOperator {
 
   class Call : public E_F0mps {
    public:
-    Expression arrays[8];
-    C_F0 openHeat, heatArray, openStiffness, stiffnessArray, close;
-    Expression heatCall, stiffnessCall;
+    static constexpr int kArrays = 8;
+    bool withMotion;
+    Expression arrays[kArrays];
+    // The functions (heat, stiffness, the contact's product) and the local arrays they apply to.
+    C_F0 open[3], array[3], close;
+    Expression call[3];
 
-    explicit Call(const basicAC_F0& args) {
-      Block::open(currentblock);  // the two arrays the functions are applied to
-      C_F0 size(args[2], "n");
-      openHeat = currentblock->NewVar<LocalVariable>("the heat solve's array", atype<KN<double>*>(), size);
-      heatArray = currentblock->Find("the heat solve's array");
-      openStiffness = currentblock->NewVar<LocalVariable>("the stiffness solve's array", atype<KN<double>*>(), size);
-      stiffnessArray = currentblock->Find("the stiffness solve's array");
-      const Polymorphic* heat = dynamic_cast<const Polymorphic*>(args[0].LeftValue());
-      const Polymorphic* stiffness = dynamic_cast<const Polymorphic*>(args[1].LeftValue());
-      if (!heat || !stiffness) CompileError("StepSolveFractionBy: its first two arguments are functions, func real f(real[int] & x)");
-      heatCall = to<double>(C_F0(heat, "(", heatArray));
-      stiffnessCall = to<double>(C_F0(stiffness, "(", stiffnessArray));
-      for (int k = 0; k < 8; ++k) arrays[k] = k == 2 ? to<KNM<double>*>(args[2 + k]) : to<KN<double>*>(args[2 + k]);
+    explicit Call(const basicAC_F0& args) : withMotion(args.size() == 11) {
+      const int functions = withMotion ? 3 : 2;
+      static const char* const names[3] = {"the heat solve's array", "the stiffness solve's array",
+                                           "the contact product's array"};
+      Block::open(currentblock);
+      C_F0 size(args[functions], "n");
+      for (int f = 0; f < functions; ++f) {
+        open[f] = currentblock->NewVar<LocalVariable>(names[f], atype<KN<double>*>(), size);
+        array[f] = currentblock->Find(names[f]);
+        const Polymorphic* function = dynamic_cast<const Polymorphic*>(args[f].LeftValue());
+        if (!function)
+          CompileError("StepSolveFractionBy: its first " + std::to_string(functions) +
+                       " arguments are functions, func real f(real[int] & x)");
+        call[f] = to<double>(C_F0(function, "(", array[f]));
+      }
+      for (int k = 0; k < kArrays; ++k)
+        arrays[k] = k == 2 ? to<KNM<double>*>(args[functions + k]) : to<KN<double>*>(args[functions + k]);
       close = C_F0((Expression)Block::snewclose(currentblock), atype<void>());
     }
 
     AnyType operator()(Stack stack) const {
       WhereStackOfPtr2Free(stack) = new StackOfPtr2Free(stack);
-      openHeat.eval(stack);
-      openStiffness.eval(stack);
-      KN<double>* a[8];
+      for (int f = 0; f < (withMotion ? 3 : 2); ++f) open[f].eval(stack);
+      KN<double>* a[kArrays];
       KNM<double>* table = nullptr;
-      for (int k = 0; k < 8; ++k) {
+      for (int k = 0; k < kArrays; ++k) {
         if (k == 2) table = GetAny<KNM<double>*>((*arrays[k])(stack));
         else a[k] = GetAny<KN<double>*>((*arrays[k])(stack));
       }
@@ -245,13 +253,24 @@ class StepSolveFractionByOperator : public OneOperator {
         FactorSlot& mechSlot = SlotAt(lrint((*a[0])[2]));
         if (!heatSlot.external || !mechSlot.external)
           throw std::invalid_argument("the heat and stiffness slots must be external (SpdExternal)");
+        const bool scriptColumns = mechSlot.contact && mechSlot.contact->caller_columns;
+        if (scriptColumns != withMotion)
+          throw std::invalid_argument(withMotion ? "a contact product given for a slot without the script's contact problem "
+                                                   "(SpdDelassusScriptColumns)"
+                                                 : "the contact problem's columns are the script's (SpdDelassusScriptColumns): "
+                                                   "give their product as the third function");
         // unbound again however the step ends
         struct Unbind {
           FactorSlot &heat, &mech;
-          ~Unbind() { heat.external->bind(nullptr); mech.external->bind(nullptr); }
+          ~Unbind() {
+            heat.external->bind(nullptr);
+            mech.external->bind(nullptr);
+            if (mech.contact) mech.contact->motion = nullptr;
+          }
         } unbind{heatSlot, mechSlot};
-        heatSlot.external->bind(ScriptSolve{stack, heatCall, heatArray});
-        mechSlot.external->bind(ScriptSolve{stack, stiffnessCall, stiffnessArray});
+        heatSlot.external->bind(ScriptSolve{stack, call[0], array[0]});
+        mechSlot.external->bind(ScriptSolve{stack, call[1], array[1]});
+        if (withMotion) mechSlot.contact->motion = ScriptSolve{stack, call[2], array[2]};
         return StepSolveFraction(a[0], a[1], table, a[3], a[4], a[5], a[6], a[7]);
       });
       close.eval(stack);
@@ -261,10 +280,20 @@ class StepSolveFractionByOperator : public OneOperator {
   };
 
   E_F0* code(const basicAC_F0& args) const { return new Call(args); }
-  StepSolveFractionByOperator()
-      : OneOperator(atype<long>(), atype<Polymorphic*>(), atype<Polymorphic*>(), atype<KN<double>*>(), atype<KN<double>*>(),
-                    atype<KNM<double>*>(), atype<KN<double>*>(), atype<KN<double>*>(), atype<KN<double>*>(),
-                    atype<KN<double>*>(), atype<KN<double>*>()) {}
+  // The 10-argument form, and the 11-argument one with contactMotion third (withMotion).
+  explicit StepSolveFractionByOperator(bool withMotion)
+      : OneOperator(atype<long>(), withMotion ? Signature(atype<Polymorphic*>()) : Signature()) {}
+
+ private:
+  // The functions, then settings, data, table (a matrix), contact, chi, T, u, stats.
+  static ArrayOfaType Signature() {
+    const aType f = atype<Polymorphic*>(), v = atype<KN<double>*>(), m = atype<KNM<double>*>();
+    return ArrayOfaType(f, f, v, v, m, v, v, v, v, v, false);
+  }
+  static ArrayOfaType Signature(aType third) {
+    const aType f = atype<Polymorphic*>(), v = atype<KN<double>*>(), m = atype<KNM<double>*>();
+    return ArrayOfaType(f, f, third, v, v, m, v, v, v, v, v, false);
+  }
 };
 
 // The reason the last StepSolveFraction stopped unconverged ("" after a converged step); the
@@ -281,7 +310,8 @@ void AddStepFunctions() {
                                Matrice_Creuse<double>*>(StepOperatorsSet));
   Global.Add("StepSolveFraction", "(",
              new OneOperator8_<long, A, A, KNM<double>*, A, A, A, A, A>(StepSolveFraction));
-  Global.Add("StepSolveFractionBy", "(", new StepSolveFractionByOperator);
+  Global.Add("StepSolveFractionBy", "(", new StepSolveFractionByOperator(false));
+  Global.Add("StepSolveFractionBy", "(", new StepSolveFractionByOperator(true));
   Global.Add("StepFailureMessage", "(", new OneOperator1s_<S, long>(StepFailureMessage));
 }
 
