@@ -48,7 +48,9 @@ but where newton is named:
   C' z the ranks' slices' sum, or without kept columns (-ddmcolumnsmb 0) a distributed solve, the same;
 - -meshestimate 1 -timeestimate 1 on 2 ranks (rank 0 runs the companions, the sequential scene):
   the mesh estimate equals the sequential run's to 1e-6 (relative), the time bound is made;
-- make run SCENE=sleeve-3d NP=2 runs it into the folder it names and draws its figures;
+- make run SCENE=sleeve-3d NP=2 runs it into the folder it names and draws its figures; there (the
+  default mesh: more than 400 dofs a subdomain) -ddmgeneo -1 (auto) takes GenEO's coarse space, on the
+  test mesh one level;
 - the MPI entry sets the scene's name and defaults (sleeveScene, sleeveDefaults) as the scene does.
 Writes results/checks/sleeve_3d_mpi.json.
 """
@@ -352,11 +354,20 @@ def main():
     check(not left, f"every run's temporary folders removed, the aborted and the stopped runs' too ({left} left in TMPDIR)")
     shutil.rmtree(SCRATCH, ignore_errors=True)
     folder = os.path.join(TEST_RESULTS, "sleeve-3d-mpi-make")
-    made = subprocess.run(["make", "-s", "run", "SCENE=sleeve-3d", "NP=2", f"ARGS=-nr 2 -nt 4 -length 0.04 -tend 20 -quiet 1 -out {folder}"],
+    # (the default mesh: subdomains of more than 400 dofs, where -ddmgeneo -1 (auto) takes GenEO)
+    made = subprocess.run(["make", "-s", "run", "SCENE=sleeve-3d", "NP=2", f"ARGS=-tend 20 -quiet 1 -out {folder}"],
                           cwd=ROOT, capture_output=True, text=True)
     figures = glob.glob(os.path.join(folder, "*.png"))
-    check(made.returncode == 0 and summary_of(folder)["distributed"]["ranks"] == 2 and figures,
+    made_ddm = summary_of(folder)["distributed"] if made.returncode == 0 else {}
+    check(made.returncode == 0 and made_ddm["ranks"] == 2 and figures,
           f"make run SCENE=sleeve-3d NP=2: exit {made.returncode}, {len(figures)} figure(s) in {folder}")
+    # -ddmgeneo -1 (auto, the default): GenEO where every subdomain holds at least 400 dofs, one level below
+    small = summary_of(runs[2])["distributed"]
+    check(made_ddm.get("geneo_option") == -1 and made_ddm.get("geneo") == 1 and made_ddm.get("coarse_space", 0) > 0
+          and made_ddm.get("subdomain_dofs", 0) >= 400 and small["geneo_option"] == -1 and small["geneo"] == 0
+          and small["subdomain_dofs"] < 400,
+          f"-ddmgeneo -1 (auto): GenEO at the defaults' {made_ddm.get('subdomain_dofs')} dofs a subdomain (coarse space "
+          f"{made_ddm.get('coarse_space')}), one level at the test mesh's {small['subdomain_dofs']}")
     record("sleeve_3d_mpi", {"curve_differences": differences, "tight_loops_difference": tight, "newton": newton,
                              "distributed": record_runs, "refusals": refusals})
     finish()
