@@ -48,7 +48,8 @@ but where newton is named:
   C' z the ranks' slices' sum, or without kept columns (-ddmcolumnsmb 0) a distributed solve, the same;
 - -meshestimate 1 -timeestimate 1 on 2 ranks (rank 0 runs the companions, the sequential scene):
   the mesh estimate equals the sequential run's to 1e-6 (relative), the time bound is made;
-- make run SCENE=sleeve-3d NP=2 runs it into the folder it names and draws its figures; there (the
+- make run SCENE=sleeve-3d NP=2 runs it into the folder it names and draws its figures, with the
+  step control the sequential newton run's steps (instants to 1e-6 s) and curves (to 1e-7); there (the
   default mesh: more than 400 dofs a subdomain) -ddmgeneo -1 (auto) takes GenEO's coarse space, on the
   test mesh one level;
 - the MPI entry sets the scene's name and defaults (sleeveScene, sleeveDefaults) as the scene does.
@@ -361,6 +362,18 @@ def main():
     made_ddm = summary_of(folder)["distributed"] if made.returncode == 0 else {}
     check(made.returncode == 0 and made_ddm["ranks"] == 2 and figures,
           f"make run SCENE=sleeve-3d NP=2: exit {made.returncode}, {len(figures)} figure(s) in {folder}")
+    # With the step control and newton the ranks take the sequential run's steps: the same rows,
+    # instants and curve to the solves' tolerance (measured: 5.4e-8 s, 6.7e-10)
+    seq_made = sequential(folder + "-seq", "-tend", "20", "-quiet", "1", solver="newton")
+    a = rows(os.path.join(seq_made, "history.csv"))
+    b = rows(os.path.join(folder, "history.csv")) if made.returncode == 0 else []
+    instants = max((abs(float(x["t"]) - float(y["t"])) for x, y in zip(a, b)), default=None)
+    # (row by row: the instants differ by round-off, which curve_difference does not allow)
+    curve = max((max(abs(float(x[c]) - float(y[c])) for x, y in zip(a, b)) / (max(abs(float(r[c])) for r in a) or 1.0)
+                 for c in COLUMNS), default=None) if b else None
+    check(len(a) == len(b) and instants is not None and instants <= 1e-6 and curve is not None and curve <= 1e-7,
+          f"make run SCENE=sleeve-3d NP=2 with the step control: {len(b)} steps against the sequential newton run's "
+          f"{len(a)}, the instants within {instants} s (<= 1e-6), the curves within {curve} (<= 1e-7)")
     # -ddmgeneo -1 (auto, the default): GenEO where every subdomain holds at least 400 dofs, one level below
     small = summary_of(runs[2])["distributed"]
     check(made_ddm.get("geneo_option") == -1 and made_ddm.get("geneo") == 1 and made_ddm.get("coarse_space", 0) > 0
