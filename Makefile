@@ -191,7 +191,7 @@ endif
 plugin/build/%.o: plugin/glue/%.cpp $(PLUGIN_FLAGS)
 	@echo "compiling plugin/glue/$*.cpp$(if $(filter step,$*), (the step solver: the longest unit, about 45 s),)"
 	@cd plugin/build && ff-c++ "CXX=$(PLUGIN_CXX)" -c ../glue/$*.cpp -I/usr/include/eigen3 -I/usr/include/suitesparse -I.. \
-	  > $*.log 2>&1 || { cat $*.log; echo "error: compiling plugin/glue/$*.cpp failed (plugin/build/$*.log)" >&2; exit 1; }
+	  > $*.log 2>&1 || { rm -f $*.o $*.d; cat $*.log; echo "error: compiling plugin/glue/$*.cpp failed (plugin/build/$*.log)" >&2; exit 1; }
 	@sed -i -e 's#\(^\| \)\.\./#\1plugin/#g' -e 's#^$*\.o:#plugin/build/$*.o:#' plugin/build/$*.d
 -include $(wildcard plugin/build/*.d)
 $(PLUGIN): $(PLUGIN_OBJECTS)
