@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "gmres.hpp"
 #include "psor.hpp"
 
 namespace sma {
@@ -136,8 +137,82 @@ inline void project_node(const Eigen::MatrixXd& W, const Eigen::VectorXd& g, Eig
 }
 }  // namespace cone_detail
 
+// What the polish keeps from one Newton step to the next, across calls on the same W (the
+// caller's: the step solver keeps one over a time step): the last LU factor
+// of the Newton matrix's kept rows, and which rows. A step whose kept rows are the same is solved
+// by GMRES on its own matrix, preconditioned by that factor (the matrices differ only where a
+// node's status or sliding direction moved, W being the same), to 1e-12 of its right side in at
+// most 30 products; else (other rows, or GMRES short of it) the matrix is factorised again and
+// kept. Each round of each polish factorised its matrix before: on Coulomb's cone at -nt 16 -nz 20
+// (1071 rows) that was most of the run (docs/measurements.md#m-cone-polish).
+struct ConePolishMemory {
+  std::vector<Eigen::Index> kept;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+  bool held = false;
+  long factorisations = 0, reuses = 0;  // (counts over the memory's life)
+};
+
+// Newton's step J step = -F of polish_cone, where J = I - D + D diag(rho) W (+ Coulomb's slope
+// column). A row whose D row is 0 and whose slope is 0 (an open node's three rows; a tangential
+// motion blocked, or without a threshold) is the identity's: its step is -F there, known, and only
+// the other rows and columns are solved for, with the known steps moved to the right side. The same
+// solution as the whole LU's (to round-off); its cost is the pressing nodes' cube, not the bore's,
+// or with a memory a few products when the factor of an earlier step serves.
+namespace cone_detail {
+inline Eigen::VectorXd reduced_newton_step(const Eigen::MatrixXd& J, const Eigen::MatrixXd& D, const Eigen::VectorXd& F,
+                                           const Eigen::VectorXd* slope, ConePolishMemory* memory = nullptr) {
+  const Eigen::Index n = F.size();
+  std::vector<Eigen::Index> kept, known;
+  kept.reserve((std::size_t)n);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const bool identity = D.row(k).isZero(0.0) && (!slope || (*slope)[k] == 0.0);
+    (identity ? known : kept).push_back(k);
+  }
+  Eigen::VectorXd step(n);
+  for (Eigen::Index k : known) step[k] = -F[k];
+  if (kept.empty()) return step;
+  const Eigen::Index a = (Eigen::Index)kept.size();
+  Eigen::MatrixXd Jkk(a, a);
+  Eigen::VectorXd rhs(a);
+  for (Eigen::Index i = 0; i < a; ++i) {
+    const Eigen::Index row = kept[(std::size_t)i];
+    double right = -F[row];
+    for (Eigen::Index k : known) right -= J(row, k) * step[k];
+    rhs[i] = right;
+  }
+  for (Eigen::Index j = 0; j < a; ++j)
+    for (Eigen::Index i = 0; i < a; ++i) Jkk(i, j) = J(kept[(std::size_t)i], kept[(std::size_t)j]);
+  Eigen::VectorXd solved;
+  bool done = false;
+  if (memory && memory->held && memory->kept == kept) {
+    const Eigen::PartialPivLU<Eigen::MatrixXd>& lu = memory->lu;
+    const auto preconditioned = [&](const Eigen::VectorXd& v) -> Eigen::VectorXd { return Jkk * lu.solve(v); };
+    const step_detail::GmresResult g = step_detail::gmres(preconditioned, rhs, 1e-12, 30);
+    if (g.converged && g.finite) {
+      solved = lu.solve(g.x);
+      done = solved.allFinite() && (Jkk * solved - rhs).norm() <= 1e-10 * rhs.norm();
+    }
+    if (done) ++memory->reuses;
+  }
+  if (!done) {
+    if (memory) {
+      memory->lu.compute(Jkk);
+      memory->kept = kept;
+      memory->held = true;
+      ++memory->factorisations;
+      solved = memory->lu.solve(rhs);
+    } else {
+      solved = Jkk.partialPivLu().solve(rhs);
+    }
+  }
+  for (Eigen::Index i = 0; i < a; ++i) step[kept[(std::size_t)i]] = solved[i];
+  return step;
+}
+}  // namespace cone_detail
+
 inline bool polish_cone(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, const Eigen::VectorXd& g, double accept,
-                        Eigen::VectorXd& r, int max_rounds = 15, const Eigen::VectorXd* coulomb_mu = nullptr) {
+                        Eigen::VectorXd& r, int max_rounds = 15, const Eigen::VectorXd* coulomb_mu = nullptr,
+                        ConePolishMemory* memory = nullptr) {
   const Eigen::Index m = g.size(), n = 3 * m;
   Eigen::VectorXd rho(n);
   for (Eigen::Index i = 0; i < m; ++i) {
@@ -205,7 +280,7 @@ inline bool polish_cone(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, cons
       J.block(3 * i, 3 * i, 3, 3) += Eigen::Matrix3d::Identity() - Di;
       if (coulomb_mu) J.block(3 * i + 1, 3 * i, 2, 1) -= slope.segment(3 * i + 1, 2);
     }
-    const Eigen::VectorXd step = J.partialPivLu().solve(-F);
+    const Eigen::VectorXd step = cone_detail::reduced_newton_step(J, D, F, coulomb_mu ? &slope : nullptr, memory);
     if (!step.allFinite()) return false;
     const double merit = F.squaredNorm();
     double t = 1.0;
@@ -233,7 +308,7 @@ inline bool polish_cone(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, cons
 // Throws on inconsistent input; the caller reads `converged`, `iterations`, `residual`, `polishes`.
 inline PsorResult psor_cone(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, const Eigen::VectorXd& g,
                             double omega, double tol, int maxit, Eigen::VectorXd& r, int polish_every = 0,
-                            const Eigen::VectorXd* coulomb_mu = nullptr) {
+                            const Eigen::VectorXd* coulomb_mu = nullptr, ConePolishMemory* memory = nullptr) {
   const Eigen::Index m = g.size();
   if (W.rows() != 3 * m || W.cols() != 3 * m || q.size() != 3 * m || r.size() != 3 * m)
     throw std::invalid_argument("psor_cone: W must be 3m x 3m and q, r of length 3m for m = " + std::to_string(m) +
@@ -319,7 +394,7 @@ inline PsorResult psor_cone(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, 
     // fixed point around this needs its answers to better than its own tolerance)
     if (polish_every > 0 && result.iterations == next_polish) {
       ++result.polishes;
-      if (polish_cone(W, q, g, tol, r, 15, coulomb_mu)) {
+      if (polish_cone(W, q, g, tol, r, 15, coulomb_mu, memory)) {
         if (coulomb_mu)
           for (Eigen::Index i = 0; i < m; ++i) radius[i] = (*coulomb_mu)[i] * r[3 * i];
         result.residual = cone_law_residual(W, q, radius, r);

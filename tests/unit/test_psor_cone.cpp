@@ -68,7 +68,6 @@ void expect_laws(const ConeProblem& p, const Eigen::VectorXd& r, double tol, Sta
   }
 }
 
-}  // namespace
 
 // The local problem: inside the disk A x = b; on the circle the KKT conditions A x - b = -lambda x
 // with lambda >= 0 and |x| = g; and no point of a fine polar grid of the disk does better.
@@ -345,3 +344,65 @@ TEST(PsorCone, PolishFinishesBadlyConditionedProblems) {
   }
   EXPECT_GE(plain_short, 5);  // the problems are hard for the sweeps alone
 }
+
+// The polish's Newton step on the rows that are not the identity's (cone_detail::reduced_newton_step)
+// is the whole system's solution: a random J whose open nodes' rows (D = 0) are those of the
+// identity, one tangential row with Coulomb's slope kept, against a dense LU of the whole J.
+TEST(PsorCone, ReducedNewtonStepIsTheWholeSystemsStep) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const Eigen::Index m = 12, n = 3 * m;
+  Eigen::MatrixXd J = Eigen::MatrixXd::Identity(n, n), D = Eigen::MatrixXd::Zero(n, 3);
+  Eigen::VectorXd F(n), slope = Eigen::VectorXd::Zero(n);
+  int reduced = 0;
+  for (Eigen::Index k = 0; k < n; ++k) {
+    F[k] = u(rng);
+    const Eigen::Index node = k / 3;
+    const bool open = node % 3 == 0;  // a third of the nodes open: identity rows
+    const bool slope_only = k == 3 * 3 + 1;  // node 3 (open) but its row 1 with a slope: kept
+    if (open && !slope_only) continue;
+    ++reduced;
+    if (slope_only) {
+      slope[k] = 0.2;
+      J(k, k - 1) -= slope[k];
+      continue;
+    }
+    D(k, k % 3) = 1.0;
+    for (Eigen::Index j = 0; j < n; ++j) J(k, j) = (j == k ? 2.0 + n : 0.0) + u(rng);
+  }
+  ASSERT_GT(reduced, 0);
+  ASSERT_LT(reduced, n);
+  const Eigen::VectorXd whole = J.partialPivLu().solve(-F);
+  const Eigen::VectorXd step = sma::cone_detail::reduced_newton_step(J, D, F, &slope);
+  EXPECT_LE((step - whole).lpNorm<Eigen::Infinity>(), 1e-12 * whole.lpNorm<Eigen::Infinity>());
+  // without the slope the row with it would be taken as the identity's: then not the whole step
+  const Eigen::VectorXd wrong = sma::cone_detail::reduced_newton_step(J, D, F, nullptr);
+  EXPECT_GT((wrong - whole).lpNorm<Eigen::Infinity>(), 1e-6);
+
+  // With a memory: the first step factorises; a later one on a nearby matrix with the same kept
+  // rows (a sliding direction turned) is solved by GMRES on the kept factor, the whole LU's step to
+  // 1e-10; other kept rows factorise again.
+  sma::ConePolishMemory memory;
+  const Eigen::VectorXd first = sma::cone_detail::reduced_newton_step(J, D, F, &slope, &memory);
+  EXPECT_LE((first - whole).lpNorm<Eigen::Infinity>(), 1e-12 * whole.lpNorm<Eigen::Infinity>());
+  EXPECT_EQ(memory.factorisations, 1);
+  EXPECT_EQ(memory.reuses, 0);
+  Eigen::MatrixXd nearby = J;
+  for (Eigen::Index k = 0; k < n; ++k)
+    if (!D.row(k).isZero(0.0))
+      for (Eigen::Index j = 0; j < n; ++j) nearby(k, j) += 0.05 * u(rng);
+  const Eigen::VectorXd reused = sma::cone_detail::reduced_newton_step(nearby, D, F, &slope, &memory);
+  const Eigen::VectorXd nearby_whole = nearby.partialPivLu().solve(-F);
+  EXPECT_EQ(memory.factorisations, 1);
+  EXPECT_EQ(memory.reuses, 1);
+  EXPECT_LE((reused - nearby_whole).lpNorm<Eigen::Infinity>(), 1e-10 * nearby_whole.lpNorm<Eigen::Infinity>());
+  Eigen::MatrixXd fewer = D;
+  fewer.row(3).setZero();  // node 1's normal row opens: the identity's too
+  Eigen::MatrixXd J_fewer = nearby;
+  J_fewer.row(3) = Eigen::RowVectorXd::Unit(n, 3);
+  const Eigen::VectorXd refactored = sma::cone_detail::reduced_newton_step(J_fewer, fewer, F, &slope, &memory);
+  EXPECT_EQ(memory.factorisations, 2);
+  EXPECT_LE((refactored - J_fewer.partialPivLu().solve(-F)).lpNorm<Eigen::Infinity>(), 1e-10 * refactored.lpNorm<Eigen::Infinity>());
+}
+
+}  // namespace
