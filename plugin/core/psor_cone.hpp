@@ -305,6 +305,8 @@ inline bool polish_cone(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, cons
 // O(n^2), and while part of the bore sticks it may fail for thousands of sweeps (sleeve-3d's
 // pull-out at L = 10 cm: 10644 sweeps, a failed polish every 10 was most of the time); doubling
 // keeps the polishes to log2 of the sweeps and adds at most as many sweeps as were already done.
+// The polishes' factor is kept over the call (ConePolishMemory), or over the caller's calls when
+// it gives its memory (the step solver: over a time step).
 // Throws on inconsistent input; the caller reads `converged`, `iterations`, `residual`, `polishes`.
 inline PsorResult psor_cone(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, const Eigen::VectorXd& g,
                             double omega, double tol, int maxit, Eigen::VectorXd& r, int polish_every = 0,
@@ -355,6 +357,9 @@ inline PsorResult psor_cone(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, 
   // normal reaction, taken as soon as the node's normal component is updated.
   Eigen::VectorXd radius = g;
   long long polish_wait = polish_every, next_polish = polish_every;  // (long: doubled past maxit)
+  // the polishes' factor: the caller's (kept over its calls), else this call's own
+  ConePolishMemory own_memory;
+  ConePolishMemory* const polish_memory = memory ? memory : &own_memory;
   while (result.iterations < maxit) {
     ++result.iterations;
     double change = 0.0, size = 0.0;
@@ -394,7 +399,7 @@ inline PsorResult psor_cone(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, 
     // fixed point around this needs its answers to better than its own tolerance)
     if (polish_every > 0 && result.iterations == next_polish) {
       ++result.polishes;
-      if (polish_cone(W, q, g, tol, r, 15, coulomb_mu, memory)) {
+      if (polish_cone(W, q, g, tol, r, 15, coulomb_mu, polish_memory)) {
         if (coulomb_mu)
           for (Eigen::Index i = 0; i < m; ++i) radius[i] = (*coulomb_mu)[i] * r[3 * i];
         result.residual = cone_law_residual(W, q, radius, r);
