@@ -281,18 +281,14 @@ class StepSolveFractionByOperator : public OneOperator {
 
   E_F0* code(const basicAC_F0& args) const { return new Call(args); }
   // The 10-argument form, and the 11-argument one with contactMotion third (withMotion).
-  explicit StepSolveFractionByOperator(bool withMotion)
-      : OneOperator(atype<long>(), withMotion ? Signature(atype<Polymorphic*>()) : Signature()) {}
+  explicit StepSolveFractionByOperator(bool withMotion) : OneOperator(atype<long>(), Signature(withMotion)) {}
 
  private:
   // The functions, then settings, data, table (a matrix), contact, chi, T, u, stats.
-  static ArrayOfaType Signature() {
+  static ArrayOfaType Signature(bool withMotion) {
     const aType f = atype<Polymorphic*>(), v = atype<KN<double>*>(), m = atype<KNM<double>*>();
+    if (withMotion) return ArrayOfaType(f, f, f, v, v, m, v, v, v, v, v, false);
     return ArrayOfaType(f, f, v, v, m, v, v, v, v, v, false);
-  }
-  static ArrayOfaType Signature(aType third) {
-    const aType f = atype<Polymorphic*>(), v = atype<KN<double>*>(), m = atype<KNM<double>*>();
-    return ArrayOfaType(f, f, third, v, v, m, v, v, v, v, v, false);
   }
 };
 
