@@ -20,6 +20,8 @@ but where newton is named:
   clamped joint (-bend 1e-2 -bendsteps 2, frictionless: the clamping unchanged); on 1 and 2 ranks
   bend.csv is the sequential scene's (moment, normal force, to 1e-4 of the largest; open and
   sliding nodes equal), with the cone and complementarity at every node;
+- a budget between the clamping's columns and the stage's (-ddmcolumnsmb 0.1): the stage takes the
+  clamping's kept columns again and keeps none of its own, the same bending;
 - the contact's columns S K^-1 S H': kept on 2 ranks (their product a global step), solved for on
   1 rank (-ddmcolumnsmb 0: a second solve a global step, about twice the solves), the same curves;
   each rank keeps a slice of their rows (on 2 ranks half the size a rank);
@@ -170,6 +172,21 @@ def main():
               f"the bending on {ranks} rank(s): bend.csv's moment and normal force within {worst:.1e} of the sequential "
               f"scene's (<= 1e-4), open and sliding nodes equal: {same}; cone excess {laws['cone_excess_max']:.1e}, r gap "
               f"{laws['complementarity_max']:.1e}, gap min {laws['gap_min']:.1e}")
+    # A budget between the clamping's columns and the stage's (-ddmcolumnsmb 0.1 MB: the clamping's
+    # 45 normal columns kept, the stage's 135 not): the stage takes the kept ones again and solves
+    # the others, keeping none; the same bending
+    code, output, _, _ = ranks_run(2, out + "-np2-budget", *SMALL, *BEND, "-ddmcolumnsmb", "0.1", *FIXEDPOINT)
+    budget = summary_of(out + "-np2-budget")["distributed"] if code == 0 else {}
+    a, b = rows(os.path.join(seq, "bend.csv")), rows(os.path.join(out + "-np2-budget", "bend.csv")) if code == 0 else []
+    worst = max((abs(float(x[c]) - float(y[c])) / max(abs(float(r[c])) for r in a)
+                 for x, y in zip(a, b) for c in ("moment", "normal_force_total")), default=None) if b else None
+    check(code == 0 and budget["contact_columns"] == "solved" and budget["contact_columns_reused"] > 0
+          and len(a) == len(b) and worst is not None and worst <= 1e-4,
+          f"-ddmcolumnsmb 0.1 on 2 ranks (the clamping's columns kept, the stage's not): exit {code}, "
+          f"{budget.get('contact_columns_reused')} columns taken again, the stage's {budget.get('contact_columns')}; "
+          f"bend.csv within {worst} of the sequential scene's (<= 1e-4)")
+    if code != 0:
+        print(output[-2000:])
     # The tight loops on 2 ranks with GenEO's coarse space (-ddmgeneo 1): the difference is the
     # loops' tolerance, and the two levels are at work.
     seq_tight = sequential(out + "-seq-tight", *SMALL, *TIGHT)
