@@ -2,6 +2,7 @@
 // (plugin/core: phase_projection, phase_fraction, material, obstacle, psor, contact_history,
 // heat_balance, step_record). The functions are listed in load.cpp.
 #include "glue/glue.hpp"
+#include "glue/dense.hpp"
 
 #include "core/contact_history.hpp"
 #include "core/heat_balance.hpp"
@@ -132,9 +133,7 @@ long PsorCondensed(KNM<double>* const& W, KN<double>* const& q, KN<double>* cons
       throw std::invalid_argument("settings must be [omega, tol, maxit] or [omega, tol, maxit, polish]");
     if (info->N() != 2) throw std::invalid_argument("info must have 2 entries");
     const int polish = settings->N() == 4 ? (int)(*settings)[3] : 0;
-    Eigen::MatrixXd w(n, n);
-    for (long i = 0; i < n; ++i)
-      for (long j = 0; j < n; ++j) w(i, j) = (*W)(i, j);
+    const Eigen::MatrixXd w = DenseOf(W);
     Eigen::Map<const Eigen::VectorXd> qv(&(*q)[0], n), gv(&(*g)[0], g->N());
     Eigen::VectorXd rv = Eigen::Map<const Eigen::VectorXd>(&(*r)[0], n);
     const sma::PsorResult res = sma::psor_condensed(w, qv, gv, (*settings)[0], (*settings)[1],

@@ -3,6 +3,7 @@
 // heat_theta), with the slots that keep their factors (glue/slots.hpp) and the heat's arrays
 // between calls. The functions are listed in load.cpp.
 #include "glue/glue.hpp"
+#include "glue/dense.hpp"
 #include "glue/slots.hpp"
 
 #include "core/heat_theta.hpp"
@@ -99,9 +100,7 @@ long SpdDelassusScriptColumns(long const& handle, Matrice_Creuse<double>* const&
   return guarded("SpdDelassusScriptColumns", [&] {
     FactorSlot& slot = SlotAt(handle);
     if (!slot.external) throw std::invalid_argument("slot " + std::to_string(handle) + " has no external solver (SpdExternal first)");
-    Eigen::MatrixXd w(W->N(), W->M());
-    for (long i = 0; i < W->N(); ++i)
-      for (long j = 0; j < W->M(); ++j) w(i, j) = (*W)(i, j);
+    const Eigen::MatrixXd w = DenseOf(W);
     const sma::SparseMatrix h = ToEigen(H);
     if (h.cols() != slot.external->size())
       throw std::invalid_argument("H has " + std::to_string(h.cols()) + " columns for an external solver of " +
@@ -129,11 +128,8 @@ long SpdDelassus(long const& handle, Matrice_Creuse<double>* const& H, KN<double
   return guarded("SpdDelassus", [&] {
     auto contact = std::make_unique<sma::DelassusFactor>(
         sma::delassus_factor(FactorAt(handle), ToEigen(H), cview(free), normalOnly != 0));
-    const Eigen::MatrixXd& w = contact->w;
-    const long k = w.rows();
-    W->resize(k, k);
-    for (long i = 0; i < k; ++i)
-      for (long j = 0; j < k; ++j) (*W)(i, j) = w(i, j);
+    const long k = contact->w.rows();
+    SetDense(W, contact->w);
     SlotAt(handle).contact = std::move(contact);
     SlotAt(handle).changed();
     return k;
@@ -144,17 +140,10 @@ long SpdDelassusAddCompliance(long const& handle, KNM<double>* const& C, KNM<dou
   return guarded("SpdDelassusAddCompliance", [&] {
     FactorSlot& slot = SlotAt(handle);
     if (!slot.contact) throw std::invalid_argument("no contact problem in slot " + std::to_string(handle) + " (SpdDelassus first)");
-    Eigen::MatrixXd c(C->N(), C->M());
-    for (long i = 0; i < C->N(); ++i)
-      for (long j = 0; j < C->M(); ++j) c(i, j) = (*C)(i, j);
-    sma::add_obstacle_compliance(*slot.contact, c);
+    sma::add_obstacle_compliance(*slot.contact, DenseOf(C));
     slot.changed();
-    const Eigen::MatrixXd& w = slot.contact->w;
-    const long k = w.rows();
-    W->resize(k, k);
-    for (long i = 0; i < k; ++i)
-      for (long j = 0; j < k; ++j) (*W)(i, j) = w(i, j);
-    return k;
+    SetDense(W, slot.contact->w);
+    return (long)slot.contact->w.rows();
   });
 }
 
@@ -237,9 +226,7 @@ long PsorCone(KNM<double>* const& W, KN<double>* const& q, KNM<double>* const& t
     if (settings->N() != 4) throw std::invalid_argument("settings must be [omega, tol, maxit, polish]");
     if (info->N() != 2) throw std::invalid_argument("info must have 2 entries");
     const bool coulomb = table->M() == 2;
-    Eigen::MatrixXd w(n, n);
-    for (long i = 0; i < n; ++i)
-      for (long j = 0; j < n; ++j) w(i, j) = (*W)(i, j);
+    const Eigen::MatrixXd w = DenseOf(W);
     Eigen::VectorXd g(m), mu(coulomb ? m : 0);
     for (long i = 0; i < m; ++i) {
       g[i] = (*table)(i, 0L);
