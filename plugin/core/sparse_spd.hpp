@@ -365,7 +365,7 @@ struct DelassusFactor {
   SparseMatrix y;          // n x rows.size(): L^-1 P S H_rows'
   SparseMatrix y_scaled;   // D^-1 Y
   std::vector<int> rows;   // the rows of H that the columns of Y stand for
-  // Where the caller keeps the columns C of an ExternalSolver's problem itself
+  // Where the caller keeps the columns C of an ExternalSolver's problem
   // (delassus_from_caller_columns: the distributed run's, each rank a slice of their rows),
   // y_scaled is empty and motion(z, out) gives out = C' z (rows.size() values), bound by the caller
   // for the duration of a call (plugin/glue/step.cpp StepSolveFractionBy) and empty otherwise.
@@ -408,7 +408,7 @@ inline DelassusFactor delassus_factor(const SpdFactor& a, const SparseMatrix& h,
 
 // A solver of A x = b that the caller provides (the distributed solves of FreeFEM's ffddm on MPI
 // ranks, edp/solvers/distributed.idp): its forward half is the identity (z = b), its backward half
-// the caller's solve x = A^-1 z. Its contact problem is delassus_from_columns's. The solve is bound
+// the caller's solve x = A^-1 z. Its contact problem is delassus_from_caller_columns's. The solve is bound
 // for the duration of a call (plugin/glue/step.cpp StepSolveFractionBy) and is empty otherwise.
 class ExternalSolver : public LinearSolver {
  public:
@@ -440,15 +440,16 @@ class ExternalSolver : public LinearSolver {
 };
 
 // The contact problem of an ExternalSolver (whose forward half is the identity): Y = S H_rows'
-// (so that z + Y r = b + S H' r before the backward solve) and, in place of D^-1 Y, the columns
-// C = S A^-1 S H_rows' the caller solved for (n x rows: so that C' b = H S A^-1 b for every b with
-// S b = b, the step solver's right sides), with W = H S A^-1 S H' given (k x k, the caller's, from
-// the same columns). normal_only: the even rows of H only (frictionless (n, t) pairs), as
-// delassus_factor's. The same DelassusFactor every contact routine reads. columns null: the caller
-// keeps them and gives their products (delassus_from_caller_columns).
-namespace detail {
-inline DelassusFactor delassus_external(const SparseMatrix& h, span<const double> free, const Eigen::MatrixXd* columns,
-                                        const Eigen::MatrixXd& w, bool normal_only) {
+// (so that z + Y r = b + S H' r before the backward solve) and W = H S A^-1 S H' given (k x k, the
+// caller's), the columns C = S A^-1 S H_rows' (n x rows: C' b = H S A^-1 b for every b with S b =
+// b, the step solver's right sides) kept by the caller, which binds their product C' z to
+// DelassusFactor::motion for each call: the distributed run, where each rank holds the rows of C of
+// a slice of the dofs and the product is the ranks' sum (the columns are dofs x bore rows, the
+// run's largest array: divided by the ranks instead of held whole by every rank). normal_only: the
+// even rows of H only (frictionless (n, t) pairs), as delassus_factor's. The same DelassusFactor
+// every contact routine reads.
+inline DelassusFactor delassus_from_caller_columns(const SparseMatrix& h, span<const double> free, const Eigen::MatrixXd& w,
+                                                   bool normal_only) {
   const Eigen::Index n = h.cols(), k = h.rows();
   if ((Eigen::Index)free.size() != n)
     throw std::invalid_argument("free has " + std::to_string(free.size()) + " values for " + std::to_string(n) + " dofs");
@@ -456,15 +457,10 @@ inline DelassusFactor delassus_external(const SparseMatrix& h, span<const double
   DelassusFactor result;
   for (int r = 0; r < (int)k; r += normal_only ? 2 : 1) result.rows.push_back(r);
   const Eigen::Index c = (Eigen::Index)result.rows.size();
-  if (columns && (columns->rows() != n || columns->cols() != c))
-    throw std::invalid_argument("the contact's columns are " + std::to_string(columns->rows()) + " x " +
-                                std::to_string(columns->cols()) + ", for " + std::to_string(n) + " dofs and " +
-                                std::to_string(c) + " contact rows");
   if (w.rows() != k || w.cols() != k)
     throw std::invalid_argument("W is " + std::to_string(w.rows()) + " x " + std::to_string(w.cols()) + " for " +
                                 std::to_string(k) + " contact rows");
-  if ((columns && !columns->allFinite()) || !w.allFinite())
-    throw std::invalid_argument("the contact's columns or W hold a value that is not finite");
+  if (!w.allFinite()) throw std::invalid_argument("W holds a value that is not finite");
   Eigen::Map<const Eigen::VectorXd> mask(free.begin(), n);
   const SparseMatrix ht = h.transpose();
   std::vector<Eigen::Triplet<double, int>> t;
@@ -473,29 +469,10 @@ inline DelassusFactor delassus_external(const SparseMatrix& h, span<const double
       if (mask[it.row()] != 0.0) t.emplace_back((int)it.row(), (int)j, it.value() * mask[it.row()]);
   result.y.resize((int)n, (int)c);
   result.y.setFromTriplets(t.begin(), t.end());
-  if (columns) {
-    result.y_scaled = columns->sparseView();
-  } else {
-    result.y_scaled.resize((int)n, (int)c);
-    result.caller_columns = true;
-  }
+  result.y_scaled.resize((int)n, (int)c);
+  result.caller_columns = true;
   result.w = w;
   return result;
-}
-}  // namespace detail
-
-inline DelassusFactor delassus_from_columns(const SparseMatrix& h, span<const double> free, const Eigen::MatrixXd& columns,
-                                            const Eigen::MatrixXd& w, bool normal_only) {
-  return detail::delassus_external(h, free, &columns, w, normal_only);
-}
-
-// delassus_from_columns with the columns C kept by the caller, which binds their product
-// C' z to DelassusFactor::motion for each call: the distributed run, where each rank holds the
-// rows of C of a slice of the dofs and the product is the ranks' sum (the columns are dofs x
-// bore rows, the run's largest array: divided by the ranks instead of held whole by every rank).
-inline DelassusFactor delassus_from_caller_columns(const SparseMatrix& h, span<const double> free, const Eigen::MatrixXd& w,
-                                                   bool normal_only) {
-  return detail::delassus_external(h, free, nullptr, w, normal_only);
 }
 
 // A second deformable body at the contact (an elastic pipe), loaded only by the contact reactions:
