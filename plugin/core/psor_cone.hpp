@@ -273,11 +273,20 @@ inline bool polish_cone(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, cons
   for (int round = 0; round < max_rounds; ++round) {
     if (accepted(x)) return true;
     natural(x, F, &D);
-    // J = I - D (I - rho W) = I - D + D diag(rho) W, block row by block row
+    // J = I - D (I - rho W) = I - D + D diag(rho) W, column by column: J's column j is the block
+    // diagonal D diag(rho) times W's column j, both read and written in storage order (a product
+    // of each node's 3 rows of W, strided, was 8 % of the 3D cone's run).
+    for (Eigen::Index j = 0; j < n; ++j) {
+      const double* w = W.col(j).data();
+      double* out = J.col(j).data();
+      for (Eigen::Index i = 0; i < m; ++i) {
+        const Eigen::Index k = 3 * i;
+        const double a0 = rho[k] * w[k], a1 = rho[k + 1] * w[k + 1], a2 = rho[k + 2] * w[k + 2];
+        for (int c = 0; c < 3; ++c) out[k + c] = D(k + c, 0) * a0 + D(k + c, 1) * a1 + D(k + c, 2) * a2;
+      }
+    }
     for (Eigen::Index i = 0; i < m; ++i) {
-      const Eigen::Matrix3d Di = D.middleRows(3 * i, 3);
-      J.middleRows(3 * i, 3).noalias() = Di * (rho.segment(3 * i, 3).asDiagonal() * W.middleRows(3 * i, 3));
-      J.block(3 * i, 3 * i, 3, 3) += Eigen::Matrix3d::Identity() - Di;
+      J.block(3 * i, 3 * i, 3, 3) += Eigen::Matrix3d::Identity() - D.middleRows(3 * i, 3);
       if (coulomb_mu) J.block(3 * i + 1, 3 * i, 2, 1) -= slope.segment(3 * i + 1, 2);
     }
     const Eigen::VectorXd step = cone_detail::reduced_newton_step(J, D, F, coulomb_mu ? &slope : nullptr, memory);
