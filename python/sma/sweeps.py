@@ -219,13 +219,14 @@ def step_time(history, step):
 
 def _lame_shrink_fit(a, b, delta, E, nu, plane):
     """Lame's shrink-fit pressure (Pa) of a ring a < r < b (m), free outside, pushed out by delta
-    (m) at r = a, plane strain or stress (edp/model/material.idp LameShrinkFitPressure)."""
+    (m) at r = a, plane strain or stress (edp/model/material.idp LameShrinkFitPressure); 0 for a
+    clearance (delta < 0), as the script's."""
     mu = E / (2 * (1 + nu))
     lam = E * nu / ((1 + nu) * (1 - 2 * nu))
     if plane == "stress":
         lam = 2 * lam * mu / (lam + 2 * mu)
     C = delta / (mu * a / ((lam + mu) * b ** 2) + 1 / a)
-    return 2 * mu * C * (1 / a ** 2 - 1 / b ** 2)
+    return max(0.0, 2 * mu * C * (1 / a ** 2 - 1 / b ** 2))  # a clearance (delta < 0): no contact, 0
 
 
 def lame_2d(results):
