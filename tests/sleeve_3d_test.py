@@ -33,7 +33,11 @@ model, which solves the same problem (issue 49, its first check).
 6. Bending with friction (mu 0.2, 0.01 rad): nodes open and sliding, the same invariants, the
    statuses decided with a margin (sealing nodes above 100 seal_tol of the largest reaction, open
    ones off by 100 seal_tol of the interference), and a moment above the frictionless one at the
-   same angle, both resisting the rotation.
+   same angle, both resisting the rotation; the first sliding located at once (within a 64th of
+   the increment: nodes on the cone at the end of the clamping). A leak path opening in a
+   frictionless bending (-pipeB 0.04965) located inside its increment (a 64th of it), checked by
+   runs bent to the bracket's ends in one increment (the state does not depend on the path without
+   friction): no path at the lower end, one at the upper.
 7. The plane hypothesis (-ends held: both end faces held axially and insulated; -length 0.02, the
    solution does not depend on z): every layer's pressure equal to 1e-6; on the round pipe the
    pressure converges to the plane-strain closed form (Lame) at an order in [1.6, 2.4] for
@@ -272,6 +276,33 @@ def main():
     check(b1["moment_final"] > f0["moment_final"] > 0,
           f"-bend 1e-2: the moment with friction {b1['moment_final'] / 1e3:.3f} kN m above the frictionless "
           f"{f0['moment_final'] / 1e3:.3f} kN m, both > 0 (against the rotation)")
+    # The first sliding, located inside its increment by bisection (a 64th of it): at once, since
+    # the free ends' clamping leaves nodes on the cone (their |r_t| = mu r_n).
+    located = b1["first_sliding_located"]
+    check(b1["nodes_on_cone_at_clamping"] > 0 and located == [0, 1e-2 / 2 ** b1["located_probes"]]
+          and abs(b1["first_sliding_located_moments"][0]) <= 1e-9 * b1["moment_final"]
+          and 0 < b1["first_sliding_located_moments"][1] < b1["moment_final"],
+          f"-mu 0.2 -bend 1e-2: the first sliding at once, located in ({located[0]}, {located[1]}] rad "
+          f"({b1['first_sliding_located_moments'][1]:.4g} N m at its end), {b1['nodes_on_cone_at_clamping']} nodes on the "
+          f"cone at the end of the clamping")
+
+    # 6b. a leak path opening in the bending, located in its increment (frictionless: the state at an
+    # angle does not depend on the path, so a run bent to each end of the located bracket in one
+    # increment must find no path at the lower end and one at the upper)
+    leaky = ("-pipeB", "0.04965", "-bend")
+    lk = run("sleeve-3d", "bend-leak", *leaky, "1e-2", "-bendsteps", "40")["summary"]["bending"]
+    lo, hi = lk["leak_path_located"] or [None, None]
+    width = 1e-2 / 40 / 2 ** lk["located_probes"]
+    check(lo is not None and lk["leak_path_angle_before"] <= lo < hi <= lk["leak_path_angle"]
+          and abs(hi - lo - width) <= 1e-12 and not lk["leak_path_at_clamping"],
+          f"-pipeB 0.04965 -bend 1e-2: a leak path in the increment ({lk['leak_path_angle_before']}, "
+          f"{lk['leak_path_angle']}] rad, located in ({lo}, {hi}] (width {width:.3g})")
+    if lo is not None:
+        at = {end: run("sleeve-3d", f"bend-leak-{name}", *leaky, repr(end), "-bendsteps", "1")["summary"]["bending"]
+              for name, end in (("lo", lo), ("hi", hi))}
+        check(at[lo]["leak_path_angle"] is None and at[hi]["leak_path_angle"] == hi,
+              f"bent in one increment: no leak path at {lo} rad ({at[lo]['nodes_open_final']} nodes open), one at {hi} "
+              f"({at[hi]['nodes_open_final']})")
 
     # 7. the plane hypothesis: held ends, the round pipe against Lame, the elliptic one against sleeve-elliptic
     plane = ("-ends", "held", "-length", "0.02", "-Ri", "0.05", "-pipeA", "0.0504")
@@ -415,7 +446,8 @@ def main():
               f"{f0['moment_final'] / 1e3:.2f} kN m frictionless ({f0['nodes_open_final']} of "
               f"{b0['summary']['contact_nodes']} bore nodes open)",
               f"{held['0.0505', 2]['final_pressure_mid'] / 1e6:.2f} MPa ring-averaged at mid-length",
-              f"-length 0.02 -nr 2 -nt 8: {se['n_steps']} steps", f"tractions up to {theta / 1e6:.2f} MPa around the section and "
+              f"-length 0.02 -nr 2 -nt 8: {se['n_steps']} steps",
+              f"from the start: {b1['nodes_on_cone_at_clamping']} nodes end the clamping on the cone", f"tractions up to {theta / 1e6:.2f} MPa around the section and "
               f"{axial / 1e6:.1f} MPa along z (mu p {0.2 * pressure / 1e6:.1f} MPa)"]
     figures["header_quoted"] = quoted
     header_quotes("edp/scenes/sleeve-3d.edp", quoted)
