@@ -220,6 +220,23 @@ def main():
           f"-pullout 1.2e-4: {first['nodes_slipping']} of {first['nodes_in_contact']} nodes slipping at the first increment; "
           f"the circumferential reactions at most {s['pullout']['circumferential_over_normal_max']:.2e} of the largest "
           f"(0 by symmetry) at every increment")
+    # The gross slip (every pressing node slipping) located inside its increment by bisection; the
+    # pull-out's path does not depend on its increments (every node's slip only grows), so runs
+    # pulled to the bracket's ends in one increment must find the bore not all slipping at the
+    # lower end (unless it is the stage's start) and all slipping at the upper.
+    p3 = s["pullout"]
+    lo_s, hi_s = p3["all_slip_located"] or [None, None]
+    dw = 1.2e-4 / 3
+    k = p3["all_slip_from"]
+    check(lo_s is not None and (k - 1) * dw - 1e-15 <= lo_s < hi_s <= k * dw + 1e-15
+          and abs(hi_s - lo_s - dw / 2 ** p3["located_probes"]) <= 1e-15,
+          f"-pullout 1.2e-4: the gross slip in increment {k}, located in ({lo_s}, {hi_s}] m")
+    if lo_s is not None:
+        ends = {name: run("sleeve-3d", f"pull-{name}", *pull_args[:4], "-pullout", repr(end), "-pullsteps", "1")["pullout"][-1]
+                for name, end in (("lo", lo_s), ("hi", hi_s)) if end > 0}
+        all_at = {name: int(r["nodes_slipping"]) == int(r["nodes_in_contact"]) for name, r in ends.items()}
+        check(all_at.get("lo", False) is False and all_at["hi"],
+              f"pulled in one increment: all slipping at {lo_s} m {all_at.get('lo')}, at {hi_s} m {all_at['hi']}")
 
     # 5. bending, frictionless, before any node opens (to 1e-3 rad): the problem is linear, so the
     # moment grows by the same amount at every increment (the clamped state carries no moment of its

@@ -27,6 +27,9 @@ frictionless pipe), at the paper's scale (0.5 mm interference, a = 2625).
    fields-4-pulled.vtu: the bore's shear stress sigma_rz over the first layer of cells, -2 pi / hr
    sum_T sigma_rz,T int_T r dA (the weak form of the sleeve's equilibrium along z with the test
    function 1 on the bore, 0 one cell in: exactly the sum of the nodal friction forces, f = 0).
+   The gross slip (every pressing node slipping) located inside its increment (a 64th of it) at
+   nr 2, checked by runs pulled to the bracket's ends in one increment: not all slipping at the
+   lower, all at the upper (the pull-out's path does not depend on its increments).
 4. Invariants on every run: no penetration (gap >= -1e-12 m), pressures >= 0, all austenite at the
    end, the discrete heat balance at round-off (1e-8); bad input fails naming the option (-length 0,
    -plane stress).
@@ -180,6 +183,24 @@ for nr in (2, 4, 8):
     pull[nr] = F
     data[f"pullout_force_nr{nr}"] = F
     data[f"plateau_relative_nr{nr}"] = plateau
+    if nr == 2:
+        # the gross slip located inside its increment by bisection; the path does not depend on the
+        # increments (every node's slip only grows): pulled in one increment to the bracket's ends,
+        # not all slipping at the lower, all at the upper
+        lo, hi = s["pullout_all_slip_located"] or [None, None]
+        dw, k = 1e-3 / 25, s["pullout_all_slip_from"]
+        check(lo is not None and (k - 1) * dw - 1e-15 <= lo < hi <= k * dw + 1e-15
+              and abs(hi - lo - dw / 2 ** s["pullout_located_probes"]) <= 1e-15,
+              f"pull nr 2: the gross slip in increment {k}, located in ({lo}, {hi}] m")
+        if lo is not None:
+            ends = {}
+            for name, end in (("lo", lo), ("hi", hi)):
+                o = run_scene("sleeve-axisymmetric", f"sleeve-axisymmetric-pull-{name}", *PAPER, "-length", "0.1", "-nr", "2",
+                              "-mu", "0.2", "-pullout", repr(end), "-pullsteps", "1")
+                r = rows(os.path.join(o, "pullout.csv"))[-1]
+                ends[name] = int(r["nodes_slipping"]) == int(r["nodes_in_contact"])
+            check(not ends["lo"] and ends["hi"], f"pull nr 2 in one increment: all slipping at {lo} m {ends['lo']}, "
+                  f"at {hi} m {ends['hi']}")
 # the other direction, and a pull short of the plateau (the force still rising from its start < 0)
 for tag, extra in (("away", ["-pullout", "1e-3", "-pulldirection", "away"]), ("short", ["-pullout", "1e-4"])):
     out = run_scene("sleeve-axisymmetric", f"sleeve-axisymmetric-pull-{tag}", *PAPER, "-length", "0.1",
