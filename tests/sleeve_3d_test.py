@@ -238,6 +238,15 @@ def main():
         check(all_at.get("lo", False) is False and all_at["hi"],
               f"pulled in one increment: all slipping at {lo_s} m {all_at.get('lo')}, at {hi_s} m {all_at['hi']}")
 
+    # A pull-out below the solves' resolution (1e-14 m): no node slips (the solves' round-off moved
+    # every node by more than 1e-6 of it: all 99 read as "slipping" at 0.87 of mu N before the slip floor,
+    # contact.idp ContactSlipFloor; checked by setting it to 0)
+    tiny = run("sleeve-3d", "pull-tiny", *pull_args[:4], "-pullout", "1e-14", "-pullsteps", "3")
+    check(all(int(r["nodes_slipping"]) == 0 and float(r["force_over_mu_normal"]) < 1 for r in tiny["pullout"])
+          and tiny["summary"]["pullout"]["all_slip_from"] is None,
+          f"-pullout 1e-14: no node slipping at any increment ({[r['nodes_slipping'] for r in tiny['pullout']]}), "
+          f"F / (mu N) {[round(float(r['force_over_mu_normal']), 4) for r in tiny['pullout']]}, no gross slip")
+
     # 5. bending, frictionless, before any node opens (to 1e-3 rad): the problem is linear, so the
     # moment grows by the same amount at every increment (the clamped state carries no moment of its
     # own: the half section's cuts are mirror-symmetric about x = 0). One run to 1e-2 rad in 40
