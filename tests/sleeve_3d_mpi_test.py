@@ -6,6 +6,8 @@ the scene's time loop and the paper's nested loops, every stiffness and heat sol
 On a small mesh (-nr 2 -nt 4 -length 0.04: 75 nodes, 4 layers) and fixed steps (-tol 0 -steps 100,
 so that every run takes the same instants), with the paper's nested loops (-stepsolver fixedpoint)
 but where newton is named:
+- the run's own error stated once (rank 0), the mesh's not estimated by default on ranks (its
+  companion would run sequentially on rank 0), the summary's mesh_estimate_skipped saying so;
 - MPI equality: the curves (mean pressure, the bore's mean temperature, the austenite fraction) on
   1 and 2 ranks equal the sequential scene's with the same nested loops (-stepsolver fixedpoint)
   to 1e-4 of their largest value (measured 7.7e-6, and 3.2e-5 with GenEO: the nested loops stop
@@ -147,6 +149,11 @@ def main():
         runs[ranks] = f"{out}-np{ranks}"
         reports = [line for line in output.splitlines() if line.startswith("sleeve-3d: L 0.04 m")]
         check(len(reports) == 1, f"{ranks} rank(s): the report printed {len(reports)} time(s) (rank 0's only: 1)")
+        # the mesh's error not estimated by default on ranks (rank 0 would run the companion alone), said once
+        owned = [line for line in output.splitlines() if "the run's own error" in line]
+        skipped = summary_of(runs[ranks])["mesh_estimate_skipped"] or ""
+        check(len(owned) == 1 and "MPI ranks" in owned[0] and "MPI ranks" in skipped,
+              f"{ranks} rank(s): the run's own error stated once, the mesh's skipped on ranks: {skipped!r}")
     differences = {}
     for name, (a, b) in {"1 rank": (seq, runs[1]), "2 ranks": (seq, runs[2]), "2 ranks vs 1": (runs[1], runs[2])}.items():
         differences[name] = curve_difference(a, b)
