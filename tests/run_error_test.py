@@ -10,7 +10,9 @@
    refused naming -nr 3; -meshestimate 0 makes none and says how to get one.
 3. A default companion that fails (its launcher made to fail for it alone: a copy of tools/ff in a
    tree of links to this checkout) is a warning: the run ends (exit 0) with its results, the
-   estimate null and the failure named; the same failure with -meshestimate 1 asked fails the run.
+   estimate null and the failure named; the same failure with -meshestimate 1 asked fails the run;
+   a companion that crawls (a 60 s sleep) is stopped at its budget (10 s and 4 times the run's
+   loop), the run ending well before the sleep would, saying so.
 4. -timeestimate 1: its companion (-tol 10 times looser) makes no mesh companion of its own.
 5. sleeve-radial (the estimate off by default, -meshestimate 1 on): the other branch, the time steps'
    error the larger (nr 160: mesh 1e-4 against time 5e-4): the sum and "time"; without the option
@@ -22,6 +24,7 @@ import re
 import shutil
 import subprocess
 import sys
+import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
@@ -69,8 +72,12 @@ def without(label, out, proc, skipped_names):
           f"{label}: the line says so: {line!r}")
 
 
-def sabotaged_tree():
-    """A tree of links to this checkout whose tools/ff fails the companions' runs on -nr 1."""
+FAIL_COMPANION = 'case " $* " in *" -nr 1 "*) echo "error: sabotaged companion" >&2; exit 7 ;; esac\n'
+SLOW_COMPANION = 'case " $* " in *" -nr 1 "*) sleep 60 ;; esac\n'
+
+
+def sabotaged_tree(sabotage):
+    """A tree of links to this checkout whose tools/ff runs `sabotage` first (on the companions' -nr 1)."""
     tree = os.path.join(TEST_RESULTS, "run-error-tree")
     shutil.rmtree(tree, ignore_errors=True)
     os.makedirs(os.path.join(tree, "tools"))
@@ -82,7 +89,6 @@ def sabotaged_tree():
             os.symlink(os.path.join(ROOT, "tools", name), os.path.join(tree, "tools", name))
     with open(os.path.join(ROOT, "tools", "ff")) as f:
         launcher = f.read().split("\n", 1)
-    sabotage = 'case " $* " in *" -nr 1 "*) echo "error: sabotaged companion" >&2; exit 7 ;; esac\n'
     with open(os.path.join(tree, "tools", "ff"), "w") as f:
         f.write(launcher[0] + "\n" + sabotage + launcher[1])
     os.chmod(os.path.join(tree, "tools", "ff"), 0o755)
@@ -112,7 +118,7 @@ def main():
     without("sleeve-3d -meshestimate 0", out, proc, None)
 
     # 3. a default companion that fails
-    tree = sabotaged_tree()
+    tree = sabotaged_tree(FAIL_COMPANION)
     for asked in ([], ["-meshestimate", "1"]):
         out = os.path.join(TEST_RESULTS, "run-error-3d-sabotaged" + ("-asked" if asked else ""))
         proc = subprocess.run([os.path.join(tree, "tools", "ff"), "edp/scenes/sleeve-3d.edp", "-out", out, *SHORT_3D,
@@ -126,6 +132,18 @@ def main():
             check(proc.returncode == 0 and warned and "failed (exit 7" in warned[0],
                   f"a failing default companion: exit {proc.returncode}, warned {warned}")
             without("sleeve-3d, its companion failing", out, proc, "failed (exit 7")
+    # a default companion that crawls: stopped at its budget (10 s and 4 times the run's loop)
+    tree = sabotaged_tree(SLOW_COMPANION)
+    out = os.path.join(TEST_RESULTS, "run-error-3d-slow")
+    start = time.monotonic()
+    proc = subprocess.run([os.path.join(tree, "tools", "ff"), "edp/scenes/sleeve-3d.edp", "-out", out, *SHORT_3D],
+                          cwd=tree, capture_output=True, text=True)
+    seconds = time.monotonic() - start
+    loop = summary_of(out)["wall_seconds"] if proc.returncode == 0 else 0
+    check(proc.returncode == 0 and "ran beyond its budget" in proc.stdout + proc.stderr and seconds < 30 + 4 * loop,
+          f"a crawling default companion (a 60 s sleep): stopped at its budget, the run ends in {seconds:.1f} s (exit "
+          f"{proc.returncode})")
+    without("sleeve-3d, its companion crawling", out, proc, "ran beyond its budget")
     shutil.rmtree(tree, ignore_errors=True)
 
     # 4. -timeestimate's companion makes no mesh companion of its own
