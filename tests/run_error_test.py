@@ -17,6 +17,9 @@
 5. sleeve-radial (the estimate off by default, -meshestimate 1 on): the other branch, the time steps'
    error the larger (nr 160: mesh 1e-4 against time 5e-4): the sum and "time"; without the option
    the line says the mesh's is not estimated and the summary's estimate is null.
+6. -phasemodel onoff (sleeve-radial): the line says the time steps' error is not estimated (the
+   on/off jumps; Milne's device is 12 to 200 times below the curve's change with the steps there),
+   gives the mesh's, and the summary's sum and dominant part are null.
 Writes results/checks/run_error.json.
 """
 import os
@@ -158,6 +161,14 @@ def main():
     without("sleeve-radial defaults", out, proc, None)
     out, proc = run_scene_captured("sleeve-radial", "run-error-radial-estimated", "-meshestimate", "1")
     figures["radial"] = with_sum("sleeve-radial -meshestimate 1", out, proc, "time")
+
+    # 6. the on/off phases: no time estimate claimed (their jumps are not in Milne's device)
+    out, proc = run_scene_captured("sleeve-radial", "run-error-radial-onoff", "-phasemodel", "onoff", "-meshestimate", "1")
+    s, line = summary_of(out), own_error_line(proc)
+    check(proc.returncode == 0 and s["run_error_estimate_transient"] is None and s["run_error_dominant"] is None
+          and s["mesh_error_estimate_transient"] is not None and "the time steps' not estimated" in line
+          and f"mesh {s['mesh_error_estimate_transient']:.6g}" in line,
+          f"sleeve-radial -phasemodel onoff: the time steps' error not claimed, the mesh's given: {line!r}")
 
     record("run_error", figures)
     finish()
