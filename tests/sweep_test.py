@@ -67,7 +67,9 @@ FROM_SUMMARY = {"first_contact_step": "first_contact_step", "T_inner_first_conta
                 "austenite_step": "austenite_step", "T_inner_austenite_K": "T_inner_austenite",
                 "final_pressure_mean_Pa": "final_pressure_mean", "peak_pressure_mean_Pa": "peak_pressure_mean",
                 "fixed_point_iterations_max": "fixed_point_iterations_max",
-                "dc_iterations_max": "dc_iterations_max", "wall_s": "wall_seconds"}
+                "dc_iterations_max": "dc_iterations_max", "wall_s": "wall_seconds",
+                "mesh_error_estimate_transient": "mesh_error_estimate_transient",
+                "run_error_estimate_transient": "run_error_estimate_transient"}
 STEP_OF_TIME = {"first_contact_time_s": "first_contact_step", "austenite_time_s": "austenite_step"}
 
 

@@ -65,11 +65,15 @@ KEY_FIGURES = [("first_contact_step", "first_contact_step"), ("first_contact_tim
                ("clamp_non_uniformity", "clamp_non_uniformity"),
                ("service_pressure_node_min", "service_pressure_node_min_Pa"),
                ("service_pressure_node_min_angle_deg", "service_pressure_node_min_angle_deg")]
-# (a sleeve run's steps, the rejected ones with -tol, and its own estimate of its time error: a
-# sweep of -tol or -steps is a work-precision table)
+# (a sleeve run's steps, the rejected ones with -tol, and its own estimates of its time error, of
+# its mesh's and of both over the transient: a sweep of -tol, -steps or the mesh is a work-precision
+# table)
 TRAILING_FIGURES = [("n_steps", "steps_taken"), ("steps_rejected", "steps_rejected"),
-                    ("time_error_estimate", "time_error_estimate"), ("unconverged_loops", "unconverged_loops"),
-                    ("wall_seconds", "wall_s")]
+                    ("time_error_estimate", "time_error_estimate"),
+                    ("time_error_estimate_transient", "time_error_estimate_transient"),
+                    ("mesh_error_estimate_transient", "mesh_error_estimate_transient"),
+                    ("run_error_estimate_transient", "run_error_estimate_transient"),
+                    ("unconverged_loops", "unconverged_loops"), ("wall_seconds", "wall_s")]
 STEP_TIMES = {"first_contact_time": "first_contact_step", "austenite_time": "austenite_step"}
 COINCIDE = 1e-3  # relative to a curve's largest |pressure|: curves closer share a legend entry
 ZOOM_PAST_AUSTENITE = 1.25  # the transient panel ends a quarter past the last austenite time
