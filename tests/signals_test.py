@@ -2,8 +2,9 @@
 """Every entry point ends on a signal, its children with it, says so, and publishes nothing.
 
 Each entry point (make run, make sweep, make ensemble, tools/ff, sma.run and sma.sweep from a
-Python script; and tools/ff with -meshestimate 1, signalled while the scene's own child, its
-mesh-error companion, runs) starts a long run (sleeve-circular, 100000 steps) as the leader of its own session
+Python script; and tools/ff with -meshestimate 1 and with its default companion (under coreutils'
+timeout, in a process group of its own), signalled while the scene's own child, its mesh-error
+companion, runs) starts a long run (sleeve-circular, 100000 steps) as the leader of its own session
 and process group, as a shell starts a command. Once a FreeFEM process of that session runs it is
 sent, in turn:
   - TERM to the leader alone (a job manager's `kill`, a closed batch job): the leader must pass it on;
@@ -61,6 +62,12 @@ def entry_points(tmp):
             ("tools/ff -meshestimate 1", "ff-meshestimate",
              [os.path.join(ROOT, "tools", "ff"), "edp/scenes/sleeve-circular.edp", "-steps", "20000", "-quiet", "1",
               "-meshestimate", "1", "-out", "{out}"]),
+            # the same with the default companion (-meshestimate not given), which runs under coreutils'
+            # timeout (its budget) in a process group of its own: a Ctrl-C to the run's group reaches
+            # the scene alone, and the companion must still end with it
+            ("tools/ff, its default companion", "ff-default-companion",
+             [os.path.join(ROOT, "tools", "ff"), "edp/scenes/sleeve-circular.edp", "-steps", "20000", "-quiet", "1",
+              "-out", "{out}"]),
             ("sma.run", "sma-run", [PYTHON, "-c", sma + "sma.run('sleeve-circular', {out!r}, steps=100000, quiet=1)"]),
             ("sma.sweep", "sma-sweep", [PYTHON, "-c", sma + "sma.sweep('sleeve-circular', {{'g': [400, 500]}}, "
                                         "fixed={{'steps': 100000, 'quiet': 1}}, out={out!r})"])):
@@ -137,10 +144,12 @@ def main():
         ways = ["TERM to the leader", "INT to the group"] + (["INT to FreeFEM alone"] if name == "tools/ff" else [])
         if name == "tools/ff -meshestimate 1":
             ways = ["TERM to the leader", "INT to FreeFEM alone"]
+        if name == "tools/ff, its default companion":
+            ways = ["TERM to the leader", "INT to the group", "INT to FreeFEM alone"]
         for how in ways:
             out = os.path.join(tmp, f"{folder}-{how.split()[0].lower()}-{how.split()[-1]}")
             words = [w.format(out=out) for w in argv]
-            m = stop(name, words, out, how, 2 if "-meshestimate" in name else 1)
+            m = stop(name, words, out, how, 2 if "-meshestimate" in name or "companion" in name else 1)
             measured[f"{name}: {how}"] = m
             check(m["freefem_started"] and m["ended"] and m["exit"] not in (0, None) and not m["left"]
                   and m["said"] and not m["published"],
