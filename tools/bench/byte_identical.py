@@ -41,7 +41,11 @@ def files_under(root):
 
 
 def run(tree, out, scene, options):
-    cmd = [os.path.join(tree, "tools", "ff"), os.path.join("edp", "scenes", scene), "-out", out] + options
+    # (-meshestimate 0 unless asked: the companion's summary and log hold its own timings; a tree from
+    # before the estimate's default takes it as its default)
+    asked = "-meshestimate" in options or "-balance" in options
+    estimate = ["-meshestimate", "0"] if scene.startswith("sleeve-") and not asked else []
+    cmd = [os.path.join(tree, "tools", "ff"), os.path.join("edp", "scenes", scene), "-out", out] + options + estimate
     done = subprocess.run(cmd, cwd=tree, capture_output=True, text=True)
     if done.returncode != 0:
         sys.exit(f"{tree}: {' '.join(cmd[1:])} exited {done.returncode}:\n{done.stderr[-2000:]}")

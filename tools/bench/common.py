@@ -43,6 +43,14 @@ def write_json(path, data):
     write_whole(path, json.dumps(data, indent=2, allow_nan=False))
 
 
+def without_companion(script, args):
+    """["-meshestimate", "0"] for a sleeve scene whose args do not ask for the mesh estimate (its
+    default companion, a second run, would enter the timings and the compared files), else []."""
+    words = [str(a) for a in args]
+    asked = "-meshestimate" in words or "-balance" in words
+    return ["-meshestimate", "0"] if "/sleeve-" in str(script) and not asked else []
+
+
 def run(script, out, *args, allow_failure=False, result="summary.json", env=None):
     """Runs tools/ff script -out out args (env: variables added to the environment); returns
     (process wall seconds, the JSON file `result` it wrote in out or None, the error message or "")."""
@@ -52,8 +60,11 @@ def run(script, out, *args, allow_failure=False, result="summary.json", env=None
     # Its studies refine fixed steps: a sleeve run takes them (-tol 0: the scene's -steps) unless its
     # args choose the steps (-steps, -dt, -tol; time_steps.py sets the adaptive default's -tol).
     steps = fixed_steps(args) if "/sleeve-" in script else []
+    # Its timings are a run's, not its mesh estimate's companion's (the sleeve scenes' default): the
+    # studies that want the estimate ask for it (-meshestimate, -balance).
+    estimate = without_companion(script, args)
     start = time.perf_counter()
-    proc = subprocess.run([os.path.join(ROOT, "tools", "ff"), script, "-out", out, *scale, *steps,
+    proc = subprocess.run([os.path.join(ROOT, "tools", "ff"), script, "-out", out, *scale, *steps, *estimate,
                            *map(str, args)],
                           cwd=ROOT, capture_output=True, text=True, env=dict(os.environ, **(env or {})))
     wall = time.perf_counter() - start

@@ -64,6 +64,8 @@ import time
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tools/: results_io
 import results_io  # noqa: E402  (first: the sma package sets numpy's threads before numpy loads)
 import numpy as np  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from common import without_companion  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 TEND = 30.0
@@ -93,7 +95,8 @@ def run(script, out, args, scale_name="reduced"):
     # The reference is the reduced scale's (docs/reference.md) unless --scale paper: -scale
     # scale_name unless args say.
     scale = ["-scale", scale_name] if "-scale" not in args else []
-    command = [os.path.join(ROOT, "tools", "ff"), script, "-out", out, "-quiet", "1", *scale, *map(str, args)]
+    command = [os.path.join(ROOT, "tools", "ff"), script, "-out", out, "-quiet", "1", *scale, *map(str, args),
+               *without_companion(script, args)]
     start = time.perf_counter()
     proc = subprocess.run(command, cwd=ROOT, capture_output=True, text=True)
     wall = time.perf_counter() - start

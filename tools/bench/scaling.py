@@ -35,7 +35,7 @@ import subprocess
 import sys
 import time
 
-from common import run_alone
+from common import run_alone, without_companion
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 SCENE = "edp/scenes/sleeve-circular.edp"
@@ -84,7 +84,7 @@ def timed(args):
         args.append("-scale")  # the bench's reduced scale (docs/benchmarks.md)
         args.append("reduced")
     proc = subprocess.run(["/usr/bin/time", "-f", "%M", "-o", stats, os.path.join(ROOT, "tools", "ff"),
-                           *args], cwd=ROOT, capture_output=True, text=True)
+                           *args, *without_companion(SCENE, args)], cwd=ROOT, capture_output=True, text=True)
     wall = time.perf_counter() - start
     rss_kb = int(open(stats).read().split()[-1])
     os.remove(stats)
