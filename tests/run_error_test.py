@@ -21,6 +21,9 @@
    on/off jumps; Milne's device is 12 to 200 times below the curve's change with the steps there),
    gives the mesh's where asked, and the summary's sum and dominant part are null; by default it
    makes no mesh estimate there (the jumps fall at other steps on the coarser mesh), saying why.
+7. Random thresholds (sleeve-random-threshold, -cspread 10): the companion draws its own, whose
+   sampling the difference holds (seed to seed 8.4e-4 to 1.3e-3 over the transient, as large as the
+   estimate): no estimate by default, the reason named; asked, made, and its line says so.
 Writes results/checks/run_error.json.
 """
 import os
@@ -172,6 +175,16 @@ def main():
           and s["mesh_error_estimate_transient"] is not None and "the time steps' not estimated" in line
           and f"mesh {s['mesh_error_estimate_transient']:.6g}" in line,
           f"sleeve-radial -phasemodel onoff: the time steps' error not claimed, the mesh's given: {line!r}")
+
+    # 7. random thresholds (-cspread): the companion draws its own, so not by default; asked, said
+    coarse = ["-mesh", "meshes/sleeve-coarse.msh"]
+    out, proc = run_scene_captured("sleeve-random-threshold", "run-error-random", *coarse)
+    without("sleeve-random-threshold (by default)", out, proc, "random thresholds")
+    out, proc = run_scene_captured("sleeve-random-threshold", "run-error-random-asked", *coarse, "-meshestimate", "1")
+    line = own_error_line(proc)
+    check(proc.returncode == 0 and summary_of(out)["mesh_error_estimate_transient"] is not None
+          and "random thresholds" in line and "sampling" in line,
+          f"sleeve-random-threshold -meshestimate 1: the estimate made, its line says it holds the sampling: {line!r}")
 
     record("run_error", figures)
     finish()
