@@ -127,7 +127,8 @@ def main():
     # 3. a default companion that fails
     tree = sabotaged_tree(FAIL_COMPANION)
     for asked in ([], ["-meshestimate", "1"]):
-        out = os.path.join(TEST_RESULTS, "run-error-3d-sabotaged" + ("-asked" if asked else ""))
+        # (a quote in the folder's name: the skip's reason, naming the companion's log, is JSON-quoted)
+        out = os.path.join(TEST_RESULTS, 'run-error-3d-sabo"taged' + ("-asked" if asked else ""))
         proc = subprocess.run([os.path.join(tree, "tools", "ff"), "edp/scenes/sleeve-3d.edp", "-out", out, *SHORT_3D,
                                *asked], cwd=tree, capture_output=True, text=True)
         if asked:
