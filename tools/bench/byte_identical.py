@@ -14,6 +14,9 @@ import os
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from common import without_companion  # noqa: E402
+
 # (name, scene, options): the default scenes and the step solver's other paths.
 CASES = [
     ("sleeve-circular", "sleeve-circular.edp", []),
@@ -43,9 +46,8 @@ def files_under(root):
 def run(tree, out, scene, options):
     # (-meshestimate 0 unless asked: the companion's summary and log hold its own timings; a tree from
     # before the estimate's default takes it as its default)
-    asked = "-meshestimate" in options or "-balance" in options
-    estimate = ["-meshestimate", "0"] if scene.startswith("sleeve-") and not asked else []
-    cmd = [os.path.join(tree, "tools", "ff"), os.path.join("edp", "scenes", scene), "-out", out] + options + estimate
+    script = os.path.join("edp", "scenes", scene)
+    cmd = [os.path.join(tree, "tools", "ff"), script, "-out", out] + options + without_companion(script, options)
     done = subprocess.run(cmd, cwd=tree, capture_output=True, text=True)
     if done.returncode != 0:
         sys.exit(f"{tree}: {' '.join(cmd[1:])} exited {done.returncode}:\n{done.stderr[-2000:]}")

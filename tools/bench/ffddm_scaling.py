@@ -27,6 +27,8 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 from markdown_wrap import wrap  # noqa: E402
 from results_io import read_csv  # noqa: E402
+sys.path.insert(0, os.path.join(ROOT, "tools", "bench"))
+from common import without_companion  # noqa: E402
 SCRIPT = os.path.join(ROOT, "tools", "bench", "ffddm_sleeve_3d.edp")
 CONTACT_SCRIPT = os.path.join(ROOT, "tools", "bench", "ffddm_contact_3d.edp")
 HEAT_SCRIPT = os.path.join(ROOT, "tools", "bench", "ffddm_heat_3d.edp")
@@ -185,9 +187,9 @@ def measure_scene():
         for k, (name, ranks, extra) in enumerate(SCENE_RUNS):
             out = os.path.join(scratch, str(k))
             if ranks is None:
-                # (-meshestimate 0: the timings are the run's, not its default companion's; the ranks
-                # make none by default)
-                cmd = [os.path.join(ROOT, "tools", "ff"), "edp/scenes/sleeve-3d.edp", "-meshestimate", "0"]
+                # (the timings are the run's, not its default companion's; the ranks make none by default)
+                cmd = [os.path.join(ROOT, "tools", "ff"), "edp/scenes/sleeve-3d.edp",
+                       *without_companion("edp/scenes/sleeve-3d.edp", extra)]
             else:
                 cmd = [os.path.join(ROOT, "tools", "ff-mpi"), str(ranks), "edp/mpi/sleeve-3d.edp"]
             done = subprocess.run(cmd + ["-out", out, "-quiet", "1", *extra], cwd=ROOT, capture_output=True, text=True)

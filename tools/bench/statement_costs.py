@@ -28,6 +28,9 @@ import subprocess
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from common import without_companion  # noqa: E402
+
 LOOP = ("edp/problems/sleeve/time-loop.idp", "for (int n = firstStep; n < nSteps; ++n) {",
         "CheckWritten(hist, outDir", (4,), "tl")
 STEP = ("edp/solvers/dct.idp", "func int DCTStep(", "if (!newtonSolved) {", (2, 4, 6), "dct")
@@ -93,7 +96,7 @@ def main():
                     "--trace-children-skip=*readelf*,*dirname*,*sed*,*grep*,*cat*,*awk*", "tools/ff", args.scene,
                     "-out", os.path.join(out, "results")] + args.options
                    # (the run's statements, not its default mesh estimate's companion's)
-                   + (["-meshestimate", "0"] if "/sleeve-" in args.scene and "-meshestimate" not in args.options else []),
+                   + without_companion(args.scene, args.options),
                    cwd=clone, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     dumps = []
     for path in glob.glob(os.path.join(out, "cg.*")):
