@@ -11,7 +11,7 @@ unless said otherwise; about 40 s.
    runs through, final pressure 0, its laws; bent 1e-3 rad in 2 increments, the leak path is the
    clamping's (nothing sealed: the leak detection's positive case, said as before any bending). A 0.4 mm clearance (sleeve-radial,
    -axisymmetric, -3d): no contact, the closed forms 0 (not the formulas' negative pressures), no
-   relative error claimed.
+   relative error claimed, nor a time or mesh error of the force that is not there (no companion run).
 2. Friction mu = 0.5 and 1.0 beside 0 and 0.2 (sleeve-elliptic-friction): every node inside the
    Coulomb cone |t| <= mu n (1 + 1e-8), Signorini from the end displacement (no penetration,
    gap 0 where the normal force is > 0), a node that slipped over the last step is on the cone
@@ -30,6 +30,8 @@ unless said otherwise; about 40 s.
 6. Slivers (meshes/sliver.geo): a layer of quality 0.011 converges to Lame within 2e-3; a layer of
    quality 9e-6 (area 7e-6 of the mean) is rejected up front naming the triangle; raising
    -meshminquality above 0.011 rejects the first one too.
+7. A friction coefficient of 1e-300 (sleeve-3d pull-out): the run writes its subnormal forces (its
+   summary's writer divided by zero on them).
 docs/stability.md holds the tables of cases 1-3 as this test formats them (stability_rows).
 Writes results/checks/hard_cases.json.
 """
@@ -169,6 +171,19 @@ def grazing(reference):
               and said,
               f"{scene} with a 0.4 mm clearance: exit {done_c.returncode}, no contact, closed forms {forms} (0: the free "
               f"ring), relative error {sc.get('mid_pressure_relative_error')} (none), said: {said}")
+        # Nor a run's own error of a force that is not there (step-control.idp StepForceRoundOff): no
+        # time or mesh estimate, no companion run, the reason in the summary and on the last line.
+        why = sc.get("time_error_estimate_unknown") or ""
+        line = [x for x in done_c.stdout.splitlines() if "the run's own error" in x]
+        check(sc.get("time_error_estimate_transient", 0) is None and sc.get("mesh_error_estimate_transient") is None
+              and why.startswith("no force")
+              # (the 3D run's -nr 1 does not halve: its companion is skipped for that first)
+              and (sc.get("mesh_estimate_skipped") or "").startswith("no force" if scene != "sleeve-3d" else "its companion")
+              and sc.get("run_error_estimate_transient", 0) is None and not os.path.exists(os.path.join(out_c, "mesh-estimate"))
+              and bool(line) and "not estimated, no force" in line[-1],
+              f"{scene} with a 0.4 mm clearance: no error estimated of no force (time {sc.get('time_error_estimate_transient')}, "
+              f"mesh {sc.get('mesh_error_estimate_transient')}, why {why[:60]!r}, companion run: "
+              f"{os.path.exists(os.path.join(out_c, 'mesh-estimate'))})")
         clear[scene] = forms
     # The 3D scene at interference 0 (a small mesh), clamped, then bent: its laws' gaps are measured
     # against a millionth of the bore's radius (it divided by the interference 0 and stopped after
@@ -432,6 +447,15 @@ def main():
     line = next((ln for ln in text.splitlines() if ln.startswith("sleeve-circular: 20 steps")), "")
     check(code == 0 and "no contact, never all austenite for good" in line and "-274" not in text,
           f"a run with no contact and no reversion says so: {line[:120]}")
+    # A friction coefficient of 1e-300: the pull-out's forces are subnormal (1e-294 N), and writing
+    # them (errors.idp RealText: 10^(e - p + 1) underflowed to 0) divided by zero after the run.
+    out = run_scene("sleeve-3d", "hard-mu-subnormal", "-nr", "1", "-nt", "4", "-length", "0.04", "-pullout", "1e-4",
+                    "-pullsteps", "2", "-mu", "1e-300", "-meshestimate", "0", "-scale", "paper", "-quiet", "1")
+    pull = read_json(os.path.join(out, "summary.json")).get("pullout") or {}
+    check(0 < pull.get("force_final", 0) < 1e-290 and 0.5 < pull.get("force_over_mu_normal", 0) <= 1 + 1e-9
+          and 0 <= pull.get("circumferential_over_normal_max", 1) < 1e-300,
+          f"sleeve-3d -pullout with -mu 1e-300: the run writes its subnormal forces (F {pull.get('force_final')} N, "
+          f"F / (mu N) {pull.get('force_over_mu_normal')}, circumferential {pull.get('circumferential_over_normal_max')})")
     results["stability_rows"] = stability_rows(results)
     doc_quotes("docs/stability.md", results["stability_rows"])
     record("hard_cases", results)
