@@ -176,7 +176,8 @@ def main():
     with open(os.path.join(out, "seeds.csv"), "w") as f:
         f.write("an earlier ensemble's table\n")
     victim = f"FreeFem.* -seed 2 .*{out}/seed-2"
-    driver = subprocess.Popen(["ff-mpirun", "-np", "2", DRIVER, "-v", "0", *COMMON, "-steps", "3000", "-out", out],
+    longer = [*COMMON[:COMMON.index("-steps")], "-steps", "3000", *COMMON[COMMON.index("-steps") + 2:]]  # (not twice)
+    driver = subprocess.Popen(["ff-mpirun", "-np", "2", DRIVER, "-v", "0", *longer, "-out", out],
                               cwd=ROOT, env=environment(), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     killed, deadline = False, time.time() + 120
     while not killed and driver.poll() is None and time.time() < deadline:

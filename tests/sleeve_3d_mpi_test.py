@@ -86,18 +86,27 @@ BEND = ["-bend", "1e-2", "-bendsteps", "2"]  # (the stage after the clamping: th
 COLUMNS = ("pressure_mean", "T_inner_mean", "fraction_austenite")
 
 
+def last_wins(args):
+    """The -name value pairs with a later value of a name replacing the earlier one, in the first's
+    place (SMALL's -nt 4, CONE's -nt 8): a scene refuses an option given twice."""
+    pairs = {}
+    for name, value in zip(args[0::2], args[1::2]):
+        pairs[name] = value
+    return [word for pair in pairs.items() for word in pair]
+
+
 def ranks_run(ranks, out, *args, timeout=300):
     """tools/ff-mpi on `ranks` ranks into `out`, in a session of its own (stopped whole at the
     timeout: ffddm_scaling.run_in_session): (exit code or None, stdout + stderr, seconds, session)."""
     start = time.monotonic()
     code, output, session = run_in_session([os.path.join(ROOT, "tools", "ff-mpi"), str(ranks), "edp/mpi/sleeve-3d.edp",
-                                            "-out", out, *args], timeout, cwd=ROOT, env=ENV)
+                                            "-out", out, *last_wins(args)], timeout, cwd=ROOT, env=ENV)
     return code, output, time.monotonic() - start, session
 
 
 def sequential(out, *args, solver="fixedpoint"):
     subprocess.run([os.path.join(ROOT, "tools", "ff"), "edp/scenes/sleeve-3d.edp", "-out", out, "-stepsolver",
-                    solver, *args], cwd=ROOT, check=True, stdout=subprocess.DEVNULL)
+                    solver, *last_wins(args)], cwd=ROOT, check=True, stdout=subprocess.DEVNULL)
     return out
 
 

@@ -144,7 +144,9 @@ def curve_error(history_csv, reference_csv):
         dT = [interpolate(h["t"], h["T_inner_mean"], t) - interpolate(ref["t"], ref["T_inner_mean"], t)
               for t in tgrid]
         total = sum(abs_integral(tgrid[i], tgrid[i + 1], dT[i], dT[i + 1]) for i in range(len(tgrid) - 1))
-        result["T_inner_l1"] = total / (tgrid[-1] - tgrid[0]) if len(tgrid) > 1 else abs(dT[0])
+        # (no shared time at all: none; it raised IndexError on two curves meeting at one time only)
+        result["T_inner_l1"] = (total / (tgrid[-1] - tgrid[0]) if len(tgrid) > 1
+                                else abs(dT[0]) if tgrid else None)
     if "contact_nodes" in h and "contact_nodes" in ref:
         i = first_index(h["contact_nodes"], lambda v: v > 0)
         j = first_index(ref["contact_nodes"], lambda v: v > 0)
