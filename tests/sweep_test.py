@@ -341,11 +341,14 @@ def main():
             run_notes[interference] = []
             sma.run("sleeve-radial", os.path.join(tmp, f"radial-{interference}"), notes=run_notes[interference].append,
                     interference=interference, scale="reduced", steps=60)
-        check(not run_notes[55e-6] and len(run_notes[60e-6]) == 1
-              and run_notes[60e-6][0].startswith("note: sleeve-radial: the ring touches the pipe from the end of the first step")
-              and "ring_cleared_pipe false" in run_notes[60e-6][0],
+        # (60 steps of 2.5 s: both runs also warn that their own error is about a tenth, run-error.idp;
+        # the notes compared are the clearance's)
+        clearing = {k: [n for n in v if n.startswith("note:")] for k, v in run_notes.items()}
+        check(not clearing[55e-6] and len(clearing[60e-6]) == 1
+              and clearing[60e-6][0].startswith("note: sleeve-radial: the ring touches the pipe from the end of the first step")
+              and "ring_cleared_pipe false" in clearing[60e-6][0],
               f"(g) sma.run(sleeve-radial, interference 55e-6 / 60e-6, reduced) hands the run's notes over: "
-              f"{len(run_notes[55e-6])} / {run_notes[60e-6] or 'none'}")
+              f"{len(clearing[55e-6])} / {clearing[60e-6] or 'none'} (all: {run_notes})")
         check(len(circle_errors) == 2 and all(e[0] <= 1e-6 for e in circle_errors)
               and max(e[1] for e in circle_errors) <= 2e-3
               and [row["ring_cleared_pipe"] for row in circle_table] == ["1", "0"]
