@@ -9,7 +9,8 @@ plugin/core/files.hpp).
    or with exit 1, one "error: cannot write <file>" line and no summary.json. At least one size
    must fail (or the test proves nothing) and the largest must pass.
 2. Two runs into one folder: the second, started while the first holds the folder, fails naming
-   the first's process; the first completes undisturbed, and its lock is gone after.
+   the first's process; the first completes undisturbed, and its lock is gone after. Ten pairs
+   started at once: one runs, one is refused, each time (the lock appears whole: files.hpp).
 3. A killed run (SIGKILL, no exit handler) leaves its lock; the next run takes it (the process is
    dead) and completes.
 4. A folder of the user's (a frames/ folder and notes) given as -out: refused, nothing in it touched;
@@ -168,6 +169,28 @@ def concurrent(tmp, measured):
     check(first.returncode == 0 and why == "" and not os.path.exists(os.path.join(out, ".sma-lock")),
           f"the first run completed undisturbed and released the folder (exit {first.returncode}{', ' + why if why else ''})")
     measured["concurrent"] = {"second_error": errors[0] if errors else None, "first_exit": first.returncode}
+
+
+def started_together(tmp, measured):
+    """Ten pairs of runs started at once into one folder: each time exactly one runs and the other is
+    refused as in use. (The lock was created empty, then written: a second run that read it in
+    between saw no owner, judged it stale and took the folder too, in 6 of 20 pairs; one failed
+    renaming a file the other had moved, the other on a FreeFEM assertion.)"""
+    outcomes = []
+    for i in range(10):
+        out = os.path.join(tmp, f"together-{i}")
+        args = [FF, "edp/scenes/sleeve-radial.edp", "-quiet", "1", "-tol", "0", "-steps", "300", "-meshestimate", "0",
+                "-out", out]
+        pair = [subprocess.Popen(args, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+                for _ in range(2)]
+        texts = [p.communicate(timeout=300)[0] for p in pair]
+        codes = sorted(p.returncode for p in pair)
+        refused = sum("in use by another run" in t for t in texts)
+        outcomes.append((codes, refused, os.path.exists(os.path.join(out, "summary.json"))))
+    bad = [o for o in outcomes if not (o[0] == [0, 1] and o[1] == 1 and o[2])]
+    check(not bad, f"ten pairs started together into one folder: one runs, one refused as in use, each time "
+                   f"(otherwise: {bad or 'none'})")
+    measured["started_together"] = {"pairs": len(outcomes), "bad": len(bad)}
 
 
 def killed(tmp, measured):
@@ -337,6 +360,7 @@ def main():
     with tempfile.TemporaryDirectory(prefix="faults-") as tmp:
         full_disk(tmp, measured)
         concurrent(tmp, measured)
+        started_together(tmp, measured)
         killed(tmp, measured)
         causes(tmp, measured)
         foreign(tmp, measured)

@@ -223,7 +223,7 @@ inline bool with_pid(const std::string& name, const std::string& prefix) {
 // anything else of a similar name is a user's, and makes the folder refused like any other).
 inline bool bookkeeping(const std::string& name) {
   return name == results_marker || name == results_lock || name == results_complete ||
-         with_pid(name, std::string(results_lock) + ".stale-") ||
+         with_pid(name, std::string(results_lock) + ".stale-") || with_pid(name, std::string(results_lock) + ".new-") ||
          with_pid(name, std::string(results_marker) + ".partial-") || with_pid(name, previous_staging);
 }
 
@@ -487,34 +487,64 @@ inline std::string claim_results(const std::string& dir, const std::string& scen
            (m.present && !m.legacy ? "a run of " + m.scene : std::string("no run of this version of the suite"));
   const fs::path lock = d / results_lock;
   bool taken = false;
+  // The lock appears whole, its process id in it: written under a name of our own, then linked to
+  // the lock's name (link fails if the name exists: the O_EXCL of a file with its content). Created
+  // empty and then written, a second run that read it in between saw no owner, judged it stale,
+  // moved it aside and took the folder too (6 of 20 pairs started together: one failed renaming a
+  // file the other had moved, the other on a FreeFEM assertion).
+  const fs::path mine = d / (std::string(results_lock) + ".new-" + std::to_string(pid));
+  {
+    const int fd = open(mine.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd < 0) return "cannot create the lock " + mine.string() + ": " + std::strerror(errno);
+    const std::string text = std::to_string(pid) + "\n";
+    const bool written = write(fd, text.data(), text.size()) == (ssize_t)text.size();
+    close(fd);
+    if (!written) {
+      fs::remove(mine, ec);
+      return "cannot write the lock " + mine.string() + " (disk full?)";
+    }
+  }
   for (int attempt = 0; attempt < 2 && !taken; ++attempt) {
-    const int fd = open(lock.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644);
-    if (fd >= 0) {
-      const std::string text = std::to_string(pid) + "\n";
-      const bool written = write(fd, text.data(), text.size()) == (ssize_t)text.size();
-      close(fd);
-      if (!written) return "cannot write the lock " + lock.string() + " (disk full?)";
+    if (link(mine.c_str(), lock.c_str()) == 0) {
       taken = true;
       break;
     }
-    if (errno != EEXIST) return "cannot create the lock " + lock.string() + ": " + std::strerror(errno);
-    if (!fs::is_regular_file(fs::symlink_status(lock, ec)))
+    if (errno != EEXIST) {
+      const std::string why = std::strerror(errno);
+      fs::remove(mine, ec);
+      return "cannot create the lock " + lock.string() + ": " + why;
+    }
+    if (!fs::is_regular_file(fs::symlink_status(lock, ec))) {
+      fs::remove(mine, ec);
       return "the lock " + lock.string() + " is not a file (the suite writes a file there): remove it";
+    }
     const long owner = lock_owner(lock);
     if (owner == pid) {
       taken = true;
       break;
     }
-    if (process_alive(owner))
+    if (process_alive(owner)) {
+      fs::remove(mine, ec);
       return "the output folder " + dir + " is in use by another run (process " + std::to_string(owner) +
              ", lock " + lock.string() + "): wait for it or choose another -out (if no run of this suite is "
              "going on, the lock is stale: remove it)";
+    }
     // A dead run's lock: move it aside under a name of our own, so that of two runs that find
-    // the same stale lock only one takes the folder (the O_EXCL create above decides).
+    // the same stale lock only one takes the folder (the link above decides).
     const fs::path aside = d / (std::string(results_lock) + ".stale-" + std::to_string(pid));
     fs::rename(lock, aside, ec);
+    // (between the read and the move another run may have taken the folder: its lock is put back)
+    const long moved = ec ? 0 : lock_owner(aside);
+    if (moved != 0 && moved != owner && process_alive(moved)) {
+      const bool back = link(aside.c_str(), lock.c_str()) == 0;
+      fs::remove(aside, ec);
+      fs::remove(mine, ec);
+      return "the output folder " + dir + " is in use by another run (process " + std::to_string(moved) + ", lock " +
+             lock.string() + (back ? "" : ", which a third run took meanwhile") + "): wait for it or choose another -out";
+    }
     fs::remove(aside, ec);
   }
+  fs::remove(mine, ec);
   if (!taken) return "cannot take the lock " + lock.string() + " (another run keeps taking it)";
   // A claim that fails from here gives the folder back as it found it: its lock and its unfinished
   // manifest go (a disk full while writing it left both, and every later run was refused).
@@ -620,7 +650,8 @@ inline std::string claim_locked(const fs::path& d, const std::string& dir, const
   if (ec) return "cannot remove " + (d / results_complete).string() + ": " + reason(ec);
   // The suite's own temporaries that a killed run left (its unfinished manifest, the stale lock it
   // was moving aside), fresh or resumed alike: their process no longer runs.
-  for (const std::string& prefix : {std::string(results_marker) + ".partial-", std::string(results_lock) + ".stale-"})
+  for (const std::string& prefix : {std::string(results_marker) + ".partial-", std::string(results_lock) + ".stale-",
+                                    std::string(results_lock) + ".new-"})
     for (fs::directory_iterator it(d, ec), end; !ec && it != end; it.increment(ec)) {
       const std::string name = it->path().filename().string();
       if (with_pid(name, prefix)) {
