@@ -161,7 +161,7 @@ fi
 # run_filtered FIFO COMMAND...: COMMAND as a child this shell waits for, its standard input this
 # script's (an asynchronous command's would be /dev/null), its standard output through the filter
 # $untraced by way of the FIFO made at FIFO (so that $child is COMMAND itself). A TERM, INT or HUP
-# to the launcher is passed on as a TERM (and sets $stopped); the filter ignores them (it ends when
+# to the launcher is passed on as a TERM (and sets $stopped to 128 + its number); the filter ignores them (it ends when
 # the output does: a Ctrl-C stops the run, not the messages on their way). Sets $rc, the child's
 # exit code.
 # The trap is set before the child starts: a signal between the start and `child=$!` found no trap
@@ -180,7 +180,11 @@ run_filtered() {
   filter=$!
   child=""
   stopped=""
-  trap 'stopped=1; [ -z "$child" ] || kill -TERM "$child" 2>/dev/null' TERM INT HUP
+  # ($stopped: 128 + the signal's number, so that the run is said stopped by the one it got and
+  # exits with it: an INT was reported as "died of signal SIGTERM (exit 143)")
+  trap 'stopped=143; [ -z "$child" ] || kill -TERM "$child" 2>/dev/null' TERM
+  trap 'stopped=130; [ -z "$child" ] || kill -TERM "$child" 2>/dev/null' INT
+  trap 'stopped=129; [ -z "$child" ] || kill -TERM "$child" 2>/dev/null' HUP
   exec 3<&0
   "$@" <&3 3<&- 4>&- > "$fifo" &
   child=$!
