@@ -199,6 +199,15 @@ def main():
           "the failure report is kept in failed.txt")
     leftovers = [f for f in ("seeds.csv", "summary.json") if os.path.exists(os.path.join(out, f))]
     check(not leftovers, f"no ensemble result written after the failure (found: {leftovers or 'none'})")
+    # Counts beyond reason refused up front, naming the option (-seeds 1e9 segfaulted both ranks
+    # allocating the per-seed table; -seed0 2147483647 -seeds 2 failed after its first seed)
+    for extra, said in ((["-seeds", "1000000000"], "-seeds 1000000000 must be in [1, 999999]"),
+                        (["-seed0", "2147483647", "-seeds", "2"], "the seeds must be in [0, 2147483647]")):
+        bad = subprocess.run(["ff-mpirun", "-np", "2", DRIVER, "-v", "0", *extra, "-out",
+                              os.path.join(TEST_RESULTS, "ensemble-mpi-bad-seeds")], cwd=ROOT, env=environment(),
+                             capture_output=True, text=True, timeout=120)
+        check(bad.returncode != 0 and said in bad.stdout + bad.stderr,
+              f"{' '.join(extra)}: refused up front ({said!r}: exit {bad.returncode})")
 
     record("ensemble_mpi", {
         "test": "ensemble_mpi", "mesh": "meshes/sleeve-coarse.msh", "steps": 150, "seeds": seeds,
