@@ -136,6 +136,12 @@ def rows(path):
         return list(csv.DictReader(line for line in f if not line.startswith("#")))
 
 
+def own_error_line(proc):
+    """The last line of a sleeve run's output stating its own error (run-error.idp), or ""."""
+    lines = [line for line in proc.stdout.splitlines() if "the run's own error" in line]
+    return lines[-1] if lines else ""
+
+
 def sleeve_outputs(out):
     """What a sleeve scene wrote to `out`: summary.json, and the rows of history.csv, points.csv and
     contact-final.csv."""

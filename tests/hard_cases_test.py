@@ -44,7 +44,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools", "bench", "oracles"))
 
-from checklib import KELVIN_AT_0C, REDUCED, ROOT, SLEEVE_SCENES, TEST_RESULTS, celsius, check, doc_quotes, finish, read_json, record, run_scene, run_scene_captured, sci, sleeve_outputs, sleeve_geometry  # noqa: E402
+from checklib import KELVIN_AT_0C, REDUCED, ROOT, SLEEVE_SCENES, TEST_RESULTS, celsius, check, doc_quotes, finish, own_error_line, read_json, record, run_scene, run_scene_captured, sci, sleeve_outputs, sleeve_geometry  # noqa: E402
 from lame import lame_pressure  # noqa: E402
 
 COARSE = ["-mesh", "meshes/sleeve-coarse.msh", "-quiet", "1"]
@@ -174,13 +174,13 @@ def grazing(reference):
         # Nor a run's own error of a force that is not there (step-control.idp StepForceRoundOff): no
         # time or mesh estimate, no companion run, the reason in the summary and on the last line.
         why = sc.get("time_error_estimate_unknown") or ""
-        line = [x for x in done_c.stdout.splitlines() if "the run's own error" in x]
+        line = own_error_line(done_c)
         check(sc.get("time_error_estimate_transient", 0) is None and sc.get("mesh_error_estimate_transient") is None
               and why.startswith("no force")
               # (the 3D run's -nr 1 does not halve: its companion is skipped for that first)
               and (sc.get("mesh_estimate_skipped") or "").startswith("no force" if scene != "sleeve-3d" else "its companion")
               and sc.get("run_error_estimate_transient", 0) is None and not os.path.exists(os.path.join(out_c, "mesh-estimate"))
-              and bool(line) and "not estimated, no force" in line[-1],
+              and "not estimated, no force" in line,
               f"{scene} with a 0.4 mm clearance: no error estimated of no force (time {sc.get('time_error_estimate_transient')}, "
               f"mesh {sc.get('mesh_error_estimate_transient')}, why {why[:60]!r}, companion run: "
               f"{os.path.exists(os.path.join(out_c, 'mesh-estimate'))})")

@@ -35,14 +35,9 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from checklib import ROOT, TEST_RESULTS, check, finish, record, run_scene_captured, summary_of  # noqa: E402
+from checklib import ROOT, TEST_RESULTS, check, finish, own_error_line, record, run_scene_captured, summary_of  # noqa: E402
 
 SHORT_3D = ["-length", "0.02"]
-
-
-def own_error_line(proc):
-    lines = [line for line in proc.stdout.splitlines() if "the run's own error" in line]
-    return lines[-1] if lines else ""
 
 
 def numbers_after(line, word):

@@ -25,7 +25,6 @@ the coverage and the phase events).
    warning.
 Writes results/checks/step_events.json.
 """
-import csv
 import json
 import os
 import sys
@@ -34,7 +33,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "tools", "bench", "oracles"))
 
-from checklib import check, finish, record, run_scene_captured, summary_of  # noqa: E402
+from checklib import check, finish, own_error_line, record, rows, run_scene_captured, summary_of  # noqa: E402
 from curve_error import curve_error  # noqa: E402
 
 data = {}
@@ -48,13 +47,8 @@ def run(scene, tag, *args):
 
 def history(out):
     """t, p, f (austenite fraction) with the initial state (0, 0, 0) first."""
-    t, p, f = [0.0], [0.0], [0.0]
-    with open(os.path.join(out, "history.csv")) as fh:
-        for row in csv.DictReader(line for line in fh if not line.startswith("#")):
-            t.append(float(row["t"]))
-            p.append(float(row["pressure_mean"]))
-            f.append(float(row["fraction_austenite"]))
-    return t, p, f
+    history = rows(os.path.join(out, "history.csv"))
+    return tuple([0.0] + [float(row[key]) for row in history] for key in ("t", "pressure_mean", "fraction_austenite"))
 
 
 def coverage(t, p, f):
@@ -83,11 +77,6 @@ def events(t, p, f, tol):
             ratio = max(ratio, worst / (tol * integral))
         integral += h * abs(p[k])
     return part / integral, ratio
-
-
-def own_error_line(proc):
-    lines = [line for line in proc.stdout.splitlines() if "the run's own error" in line]
-    return lines[-1] if lines else ""
 
 
 refs = {scene: run(scene, scene + "-ref", "-tol", "1e-5", "-meshestimate", "0")[0] for scene in ("sleeve-radial", "sleeve-axisymmetric")}

@@ -107,6 +107,27 @@ remove_stale_folders() {
   done
 }
 
+# require_open_files N WHY: the open-file limit at least N, else a stop (exit 3) saying WHY N are
+# needed (with 12, tools/ff's shell itself ran out of descriptors: "tools/ff: 20: .: 3: Too many
+# open files", exit 2 and no error line; with 32 Open MPI stopped for want of pipes).
+require_open_files() {
+  files=$(ulimit -n 2>/dev/null)
+  case "$files" in
+    ''|unlimited) ;;
+    *) if [ "$files" -lt "$1" ]; then
+         echo "error: the open-file limit (ulimit -n $files) is below $1: $2: raise it (ulimit -n 1024)" >&2
+         exit 3
+       fi ;;
+  esac
+}
+
+# scratch_failed: the stop (exit 3) when mktemp could not make the launcher's temporary folder
+# (TMPDIR=/sys gave only mktemp's own line and exit 3).
+scratch_failed() {
+  echo "error: no scratch folder could be made in ${TMPDIR:-/tmp} (\$TMPDIR, else /tmp; mktemp's line above says why): set TMPDIR to a writable folder" >&2
+  exit 3
+}
+
 # require_tmpdir: $TMPDIR, where the launcher makes its temporary folder (and the plugin its
 # scratch folders), an existing directory when set; a relative one made absolute (the plugin
 # follows only an absolute TMPDIR) and exported.

@@ -504,47 +504,43 @@ inline std::string claim_results(const std::string& dir, const std::string& scen
       return "cannot write the lock " + mine.string() + " (disk full?)";
     }
   }
-  for (int attempt = 0; attempt < 2 && !taken; ++attempt) {
-    if (link(mine.c_str(), lock.c_str()) == 0) {
-      taken = true;
-      break;
-    }
-    if (errno != EEXIST) {
-      const std::string why = std::strerror(errno);
-      fs::remove(mine, ec);
-      return "cannot create the lock " + lock.string() + ": " + why;
-    }
-    if (!fs::is_regular_file(fs::symlink_status(lock, ec))) {
-      fs::remove(mine, ec);
-      return "the lock " + lock.string() + " is not a file (the suite writes a file there): remove it";
-    }
-    const long owner = lock_owner(lock);
-    if (owner == pid) {
-      taken = true;
-      break;
-    }
-    if (process_alive(owner)) {
-      fs::remove(mine, ec);
-      return "the output folder " + dir + " is in use by another run (process " + std::to_string(owner) +
-             ", lock " + lock.string() + "): wait for it or choose another -out (if no run of this suite is "
-             "going on, the lock is stale: remove it)";
-    }
-    // A dead run's lock: move it aside under a name of our own, so that of two runs that find
-    // the same stale lock only one takes the folder (the link above decides).
-    const fs::path aside = d / (std::string(results_lock) + ".stale-" + std::to_string(pid));
-    fs::rename(lock, aside, ec);
-    // (between the read and the move another run may have taken the folder: its lock is put back)
-    const long moved = ec ? 0 : lock_owner(aside);
-    if (moved != 0 && moved != owner && process_alive(moved)) {
-      const bool back = link(aside.c_str(), lock.c_str()) == 0;
+  // (the loop in a function of its own: whatever it returns, the name of our own goes once after)
+  const std::string refused = [&]() -> std::string {
+    for (int attempt = 0; attempt < 2 && !taken; ++attempt) {
+      if (link(mine.c_str(), lock.c_str()) == 0) {
+        taken = true;
+        break;
+      }
+      if (errno != EEXIST) return "cannot create the lock " + lock.string() + ": " + std::strerror(errno);
+      if (!fs::is_regular_file(fs::symlink_status(lock, ec)))
+        return "the lock " + lock.string() + " is not a file (the suite writes a file there): remove it";
+      const long owner = lock_owner(lock);
+      if (owner == pid) {
+        taken = true;
+        break;
+      }
+      if (process_alive(owner))
+        return "the output folder " + dir + " is in use by another run (process " + std::to_string(owner) +
+               ", lock " + lock.string() + "): wait for it or choose another -out (if no run of this suite is "
+               "going on, the lock is stale: remove it)";
+      // A dead run's lock: move it aside under a name of our own, so that of two runs that find
+      // the same stale lock only one takes the folder (the link above decides).
+      const fs::path aside = d / (std::string(results_lock) + ".stale-" + std::to_string(pid));
+      fs::rename(lock, aside, ec);
+      // (between the read and the move another run may have taken the folder: its lock is put back)
+      const long moved = ec ? 0 : lock_owner(aside);
+      if (moved != 0 && moved != owner && process_alive(moved)) {
+        const bool back = link(aside.c_str(), lock.c_str()) == 0;
+        fs::remove(aside, ec);
+        return "the output folder " + dir + " is in use by another run (process " + std::to_string(moved) + ", lock " +
+               lock.string() + (back ? "" : ", which a third run took meanwhile") + "): wait for it or choose another -out";
+      }
       fs::remove(aside, ec);
-      fs::remove(mine, ec);
-      return "the output folder " + dir + " is in use by another run (process " + std::to_string(moved) + ", lock " +
-             lock.string() + (back ? "" : ", which a third run took meanwhile") + "): wait for it or choose another -out";
     }
-    fs::remove(aside, ec);
-  }
+    return "";
+  }();
   fs::remove(mine, ec);
+  if (!refused.empty()) return refused;
   if (!taken) return "cannot take the lock " + lock.string() + " (another run keeps taking it)";
   // A claim that fails from here gives the folder back as it found it: its lock and its unfinished
   // manifest go (a disk full while writing it left both, and every later run was refused).
