@@ -6,7 +6,10 @@ contact warm start, the slip thresholds and the slip history), sleeve-radial and
 heat-condition hook depends on time (tests/hooks/heat-ramp.edp, docs/hooks.md), 300 steps,
 a checkpoint every 50 (and sleeve-circular with moving layers, -movinglayers 1, whose layers
 move after steps 116-137: a checkpoint every 10, stopped after 125, so that the checkpoint of
-step 120 holds a moved mesh and the resumed run moves it again):
+step 120 holds a moved mesh and the resumed run moves it again; and sleeve-circular stopped after
+its time loop, its per-step files published whole: a stop during its mesh-error companion, which
+a resume must continue from the published files cut back, where it failed on the missing
+unfinished copies):
   - A: the uninterrupted run with -checkpoint 50; its outputs equal, byte for byte, those of the
     same run without -checkpoint (writing checkpoints changes nothing) and it leaves no
     checkpoint.txt behind (a finished run has nothing to resume);
@@ -41,7 +44,10 @@ CASES = [("sleeve-circular", ["-mesh", "meshes/sleeve-coarse.msh"], 50, 130),
          # a variant's hook that depends on time through sleeveTime (docs/hooks.md, rule 3)
          ("tests/hooks/heat-ramp.edp", [], 50, 130),
          # the moving layers' mesh, moved before the checkpoint and after it
-         ("sleeve-circular", ["-movinglayers", "1"], 10, 125)]
+         ("sleeve-circular", ["-movinglayers", "1"], 10, 125),
+         # stopped after its time loop (during its mesh-error companion, its summary): the per-step
+         # files are published, longer than the checkpoint records
+         ("sleeve-circular", ["-mesh", "meshes/sleeve-coarse.msh"], 50, 130, "after its loop")]
 # (-meshestimate 0: the companion's summary and log hold its own timings, which no two runs share)
 COMMON = ["-steps", "300", "-quiet", "1", "-meshestimate", "0"]
 TIMING = ("wall_seconds", "resumed_from_step", "backsolve_floor_seconds_per_step", "loop_over_floor",
@@ -79,9 +85,9 @@ def same_files(a, b, skip=("summary.json",)):
 def main():
     measured, temperatures = [], {}
     with tempfile.TemporaryDirectory(prefix="resume-") as tmp:
-        for case, (scene, options, every, stop) in enumerate(CASES):
+        for case, (scene, options, every, stop, *when) in enumerate(CASES):
             name = os.path.basename(scene) + ("" if case == 0 or scene != CASES[0][0] else f"-{case}")
-            label = f"{scene} {' '.join(options)}".strip()
+            label = f"{scene} {' '.join(options)}".strip() + (f", stopped {when[0]}" if when else "")
             at = stop - stop % every  # the checkpoint the resumed run starts from
             plain, full = (os.path.join(tmp, f"{name}-{k}") for k in ("plain", "A"))
             r0 = run(scene, plain, *options)
@@ -115,6 +121,8 @@ def main():
             text = open(checkpoint).read() if os.path.exists(checkpoint) else ""
             rows = sum(1 for _ in open(os.path.join(stopped, "history.csv.partial"))) - 1 \
                 if os.path.exists(os.path.join(stopped, "history.csv.partial")) else -1
+            check(f"-resume 1 continues from the checkpoint of step {at})" in rb.stdout,
+                  f"{label}: the stop's line names the checkpoint a resume continues from (step {at})")
             check(rb.returncode == 4 and f"\nstep {at}\n" in text and rows == stop
                   and not os.path.exists(os.path.join(stopped, "summary.json")),
                   f"{label}: -stopafter {stop} exits 4 (got {rb.returncode}) leaving the checkpoint of step {at} "
@@ -129,6 +137,9 @@ def main():
                       f"{moves}), and the checkpoint holds their radii")
             with open(os.path.join(stopped, "checkpoint.txt.partial"), "w") as f:
                 f.write("sma-sleeve-checkpoint 1\nscene half-writ")  # a kill during the next write
+            if when:  # the loop's end publishes its per-step files whole (time-loop.idp), then a stop
+                for stream in ("history.csv", "points.csv"):
+                    os.replace(os.path.join(stopped, stream + ".partial"), os.path.join(stopped, stream))
             rr = run(scene, stopped, *options, "-checkpoint", str(every), "-resume", "1")
             check(rr.returncode == 0, f"{label}: -resume 1 finishes (exit {rr.returncode})"
                   + ("" if rr.returncode == 0 else " " + (rr.stdout + rr.stderr)[-400:]))
@@ -153,6 +164,22 @@ def main():
                              "resumed_from_step": resumed_from, "rows_at_stop": rows})
             for folder in (plain, full):
                 shutil.rmtree(folder, ignore_errors=True)
+    # A resumed run stopped again says which checkpoint is left, whatever its own -checkpoint: the one
+    # it resumed from (it said "nothing to resume" with -checkpoint 0, or before its own first one).
+    with tempfile.TemporaryDirectory(prefix="resume-again-") as tmp:
+        out = os.path.join(tmp, "out")
+        first = run("sleeve-radial", out, "-checkpoint", "20", "-stopafter", "30")
+        said = [first.stdout.strip().splitlines()[-1:]]
+        for every in ("0", "50"):
+            again = run("sleeve-radial", out, "-checkpoint", every, "-resume", "1", "-stopafter", "45")
+            said.append(again.stdout.strip().splitlines()[-1:])
+            check(again.returncode == 4 and "continues from the checkpoint of step 20)" in again.stdout,
+                  f"sleeve-radial resumed from step 20 with -checkpoint {every}, stopped after 45: exit "
+                  f"{again.returncode} (4), its line names the checkpoint of step 20: {said[-1]}")
+        final = run("sleeve-radial", out, "-checkpoint", "0", "-resume", "1")
+        check(final.returncode == 0 and not os.path.exists(os.path.join(out, "checkpoint.txt")),
+              f"then resumed to the end (exit {final.returncode}), the checkpoint removed")
+
     # The hook acted: its air temperature, swinging with sleeveTime, moved the inner temperature
     # away from sleeve-circular's on the same mesh (a hook that saw sleeveTime = 0 would not).
     ramp = temperatures.get("tests/hooks/heat-ramp.edp", [])
