@@ -3,6 +3,9 @@
 // rules as a scene (one implementation: the manifest, the lock, what an earlier run listed kept
 // in previous-run/ or removed). Paths are arguments, never shell text.
 //   sma-results claim DIR SCENE PID    refuse DIR or lock it for PID, clear what its manifest lists
+//   sma-results resume DIR SCENE PATTERNS PID   lock DIR, which must hold SCENE's manifest, for
+//                                      PID's resumed run: remove only its listed entries matching
+//                                      the shell patterns of PATTERNS (what the run writes again)
 //   sma-results complete DIR PID       PID's run of DIR is complete: remove DIR/previous-run
 //   sma-results release DIR PID        remove PID's lock of DIR (and say so if the run did not
 //                                      complete and previous-run/ keeps the last complete run)
@@ -27,6 +30,12 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "error: %s\n", error.c_str());
     return 1;
   }
+  if (verb == "resume" && argc == 6 && pid_ok) {
+    const std::string error = sma::files::claim_results(argv[2], argv[3], pid, true, argv[4]);
+    if (error.empty()) return 0;
+    std::fprintf(stderr, "error: %s\n", error.c_str());
+    return 1;
+  }
   if (verb == "record" && argc == 3) {
     sma::files::RecordedResults known;
     const std::string error = sma::files::record_result(argv[2], known);
@@ -45,6 +54,6 @@ int main(int argc, char** argv) {
     if (!note.empty()) std::fprintf(stderr, "%s\n", note.c_str());
     return 0;
   }
-  std::fprintf(stderr, "usage: sma-results claim DIR SCENE PID | complete DIR PID | release DIR PID | record PATH\n");
+  std::fprintf(stderr, "usage: sma-results claim DIR SCENE PID | resume DIR SCENE PATTERNS PID | complete DIR PID | release DIR PID | record PATH\n");
   return 2;
 }

@@ -168,21 +168,16 @@ def main(argv):
         engine.check_grid(scene, grid, fixed)  # the values, then their types
         out = args["out"] or os.path.join(driver.ROOT, "results", "sweeps", "-".join([scene] + params))
         # every run checked by the scene itself before the folder is taken (its earlier results
-        # would be gone by the time a run refused its options)
-        engine.check_runs(out, scene, params, grid, fixed, args["jobs"])
+        # would be gone by the time a run refused its options); then taken as a scene takes its
+        # -out: a folder holding anything its manifest does not list is refused untouched; an
+        # earlier sweep's runs, table and figures go first (with -resume 1 its runs stay)
+        states = engine.take_folder(out, scene, params, grid, fixed, args["jobs"])
     except (BadInput, driver.SceneError) as e:
-        print(f"error: {e}", file=sys.stderr)
-        return 2
-    # Taken as a scene takes its -out: a folder holding anything its manifest does not list is
-    # refused untouched; an earlier sweep's runs, table and figures go first.
-    try:
-        results_io.claim(out, "sweep " + scene)
-    except results_io.ResultsError as e:
         print(f"error: {e}", file=sys.stderr)
         return 2
     try:
         status, _, _ = engine.run_grid(out, scene, params, grid, fixed, args["jobs"],
-                                       record={"args": args["extra"], "options": fixed})
+                                       record={"args": args["extra"], "options": fixed}, states=states)
         if status == 0:  # every run ended well: the earlier sweep, kept in previous-run/, goes
             results_io.complete(out)
         return status

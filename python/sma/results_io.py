@@ -47,6 +47,12 @@ def claim(folder, scene):
     results_tool("claim", folder, scene, str(os.getpid()))
 
 
+def resume(folder, scene, patterns):
+    """Takes `folder` for this process's resumed run of `scene`, whose manifest it must hold: only
+    its listed entries matching the shell patterns of `patterns` (what the run writes again) go."""
+    results_tool("resume", folder, scene, patterns, str(os.getpid()))
+
+
 def complete(folder):
     """This process's run of `folder` (taken by claim) is complete: the earlier complete run, kept
     in its previous-run/ since the claim, is removed."""

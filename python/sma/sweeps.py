@@ -627,15 +627,99 @@ def stoppable_pool(jobs):
             raise
 
 
-def check_runs(out, scene, params, grid, fixed, jobs):
+# A sweep given -resume 1 (make sweep ARGS='-checkpoint 50 -resume 1', fixed={"resume": 1})
+# continues the interrupted sweep of its folder, which must have run the same scene, grid and
+# options (but these, which change nothing a run computes): its finished runs are kept, those
+# with a checkpoint resume from it, the others run. Given to every run as it was, it cleared the
+# folder first (a fresh claim) and then each run found no checkpoint.
+PLAN = "sweep-plan.json"  # what the sweep runs, written as it takes its folder
+PLAN_FREE = ("resume", "quiet", "checkpoint", "stopafter")
+SWEEP_OUTPUTS = "table.csv sweep.json *.png"  # what a resumed sweep writes again
+
+
+def resuming(fixed):
+    """Whether the fixed options ask to continue the interrupted sweep (-resume 1)."""
+    return "resume" in fixed and text_of(fixed["resume"]) not in ("0", "False")
+
+
+def sweep_plan(scene, params, grid, fixed):
+    """The record a resumed sweep must match: the scene, the grid's value texts, the options."""
+    return {"scene": scene, "params": list(params), "values": {p: [text_of(v) for v in grid[p]] for p in params},
+            "options": {k: text_of(v) for k, v in sorted(fixed.items()) if k not in PLAN_FREE}}
+
+
+def run_state(folder):
+    """"complete" (its run published summary.json: the folder's mark of completion), "checkpoint"
+    (a checkpoint to resume from) or "fresh"."""
+    if os.path.isfile(os.path.join(folder, "checkpoint.txt")):
+        return "checkpoint"
+    if os.path.isfile(os.path.join(folder, ".sma-complete")) and os.path.isfile(os.path.join(folder, "summary.json")):
+        return "complete"
+    return "fresh"
+
+
+def run_options(fixed, state):
+    """A run's fixed options in a (possibly resumed) sweep: -resume 1 only where it has a checkpoint."""
+    options = {k: v for k, v in fixed.items() if k != "resume"}
+    if state == "checkpoint":
+        options["resume"] = 1
+    return options
+
+
+def take_folder(out, scene, params, grid, fixed, jobs):
+    """Checks every run, then takes `out` for the sweep (results_io.claim: its earlier results go;
+    resumed, -resume 1: only its table, figures and sweep.json, its runs kept) and writes the plan.
+    Returns each run's state (run_state; all "fresh" unless resumed). Raises SceneError naming the
+    refused run, a plan that differs from the interrupted sweep's, or a folder that cannot be taken."""
+    plan = sweep_plan(scene, params, grid, fixed)
+    _, combos, _, _ = grid_runs(params, grid, jobs)
+    folders = [run_folder(out, params, c) for c in combos]
+    if resuming(fixed):
+        path = os.path.join(out, PLAN)
+        if not os.path.isfile(path):
+            raise SceneError(f"-resume 1: {out} holds no sweep to resume ({path} is missing: a sweep writes it "
+                             "as it starts): run the sweep without -resume")
+        try:
+            before = results_io.read_json(path)
+        except results_io.ResultsError as e:
+            raise SceneError(f"-resume 1: {e}") from None
+        for key in plan:
+            if before.get(key) != plan[key]:
+                raise SceneError(f"-resume 1: the sweep in {out} ran {key} {json.dumps(before.get(key))}, this one "
+                                 f"{json.dumps(plan[key])}: resume with the interrupted sweep's scene, values and "
+                                 f"options (only {', '.join('-' + f for f in PLAN_FREE)} may differ)")
+        states = [run_state(f) for f in folders]
+    else:
+        states = ["fresh"] * len(folders)
+    check_runs(out, scene, params, grid, fixed, jobs, states)
+    try:
+        if resuming(fixed):
+            results_io.resume(out, "sweep " + scene, SWEEP_OUTPUTS)
+        else:
+            results_io.claim(out, "sweep " + scene)
+            try:
+                write_json(os.path.join(out, PLAN), plan)
+            except OSError as e:
+                results_io.release(out)
+                raise SceneError(f"cannot write {os.path.join(out, PLAN)}: {e.strerror or e}") from None
+    except results_io.ResultsError as e:
+        raise SceneError(str(e)) from None
+    return states
+
+
+def check_runs(out, scene, params, grid, fixed, jobs, states=None):
     """Checks every run of the grid (driver.check: the scene's check-only mode, nothing written),
     `jobs` at a time, before the caller takes `out`: a run that refused its options only after
     the sweep's folder was taken came after an earlier sweep's results there were deleted
-    (ARGS='-gpipe -5'). Raises SceneError naming the first refused run's values and its error."""
+    (ARGS='-gpipe -5'). A resumed sweep's finished runs (`states`) are not run, nor checked.
+    Raises SceneError naming the first refused run's values and its error."""
     _, combos, values, jobs = grid_runs(params, grid, jobs)
+    states = states or ["fresh"] * len(combos)
 
     def one(i):
-        driver.check(scene, run_folder(out, params, combos[i]), **fixed, **dict(zip(params, values[i])))
+        if states[i] != "complete":
+            driver.check(scene, run_folder(out, params, combos[i]), **run_options(fixed, states[i]),
+                         **dict(zip(params, values[i])))
     with stoppable_pool(jobs) as pool:
         futures = [pool.submit(one, i) for i in range(len(combos))]
         for i, future in enumerate(futures):  # in the grid's order: the first refused run is named
@@ -645,24 +729,31 @@ def check_runs(out, scene, params, grid, fixed, jobs):
                 raise SceneError(f"{run_label(params, combos[i])}: {e}") from None
 
 
-def run_grid(out, scene, params, grid, fixed, jobs, record=None, say=print, warn=None):
+def run_grid(out, scene, params, grid, fixed, jobs, record=None, say=print, warn=None, states=None):
     """Runs every combination of the values of `grid` ({param: [values]}, checked by check_grid)
     into its folder of `out` (taken by the caller), then publishes table.csv, the figures and
     sweep.json. `grid`'s values go to the scene as given; their texts (text_of) name the folders
     and fill the table. Returns (exit status 0, or 1 when a run failed, the record written to
     sweep.json, the finished runs as [(combo texts, Results)]). `say` and `warn` print the
-    progress and the errors (the command line's console)."""
+    progress and the errors (the command line's console). `states` (take_folder): a resumed
+    sweep's finished runs are kept, those with a checkpoint resume."""
     import sys
     warn = warn or (lambda line: print(line, file=sys.stderr, flush=True))
     texts, combos, values, jobs = grid_runs(params, grid, jobs)
     folders = [run_folder(out, params, c) for c in combos]
     label = [run_label(params, c) for c in combos]
+    states = states or ["fresh"] * len(combos)
     say(f"sweep: {scene} " + " x ".join(f"-{p} over {' '.join(t)}" for p, t in zip(params, texts))
         + f" ({jobs} at a time) into {out}/", flush=True)
+    if resuming(fixed):
+        say(f"sweep: -resume 1: {states.count('complete')} run(s) finished before are kept, "
+            f"{states.count('checkpoint')} resume from their checkpoint, {states.count('fresh')} run", flush=True)
 
     def one(i):  # the run's notes and warnings named by its values
-        return driver.run(scene, folders[i], notes=lambda line: warn(f"{label[i]}: {line}"), **fixed,
-                          **dict(zip(params, values[i])))
+        if states[i] == "complete":
+            return folders[i]
+        return driver.run(scene, folders[i], notes=lambda line: warn(f"{label[i]}: {line}"),
+                          **run_options(fixed, states[i]), **dict(zip(params, values[i])))
 
     failures = {}
     with stoppable_pool(jobs) as pool:
@@ -671,7 +762,7 @@ def run_grid(out, scene, params, grid, fixed, jobs, record=None, say=print, warn
             i = futures[future]
             try:
                 future.result()
-                say(f"sweep: {label[i]} done", flush=True)
+                say(f"sweep: {label[i]} " + ("kept (finished before)" if states[i] == "complete" else "done"), flush=True)
             except SceneError as e:
                 failures[i] = str(e)
                 warn(f"error: {label[i]}: {e}")
@@ -709,7 +800,8 @@ def run_grid(out, scene, params, grid, fixed, jobs, record=None, say=print, warn
             "scene": scene, "param": param, "param_meaning": options[param]["meaning"],
             "values": texts[0], **(record or {"args": [], "options": fixed}), "jobs": jobs,
             "runs": [{"value": c[0], "out": folders[i], "status": "failed" if i in failures else "done",
-                      **({"error": failures[i]} if i in failures else {})} for i, c in enumerate(combos)],
+                      **({"error": failures[i]} if i in failures else {}), **resumed_of(states[i])}
+                     for i, c in enumerate(combos)],
             "table": "table.csv", "table_columns": header,
             "figures": [os.path.basename(p) for p in written],
             "curves_coinciding_within_0.1_percent": [g for g in groups if len(g) > 1],
@@ -721,7 +813,8 @@ def run_grid(out, scene, params, grid, fixed, jobs, record=None, say=print, warn
                                                           for k, v in fixed.items()}, "jobs": jobs,
             "runs": [{"values": dict(zip(params, c)), "out": folders[i],
                       "status": "failed" if i in failures else "done",
-                      **({"error": failures[i]} if i in failures else {})} for i, c in enumerate(combos)],
+                      **({"error": failures[i]} if i in failures else {}), **resumed_of(states[i])}
+                     for i, c in enumerate(combos)],
             "table": "table.csv", "table_columns": header,
             "figures": [os.path.basename(p) for p in written], **({"note": note} if note else {})}
     write_json(os.path.join(out, "sweep.json"), sweep_record)
@@ -732,6 +825,11 @@ def run_grid(out, scene, params, grid, fixed, jobs, record=None, say=print, warn
                  else "; ".join(label[i] for i in sorted(failures)))
         warn(f"error: the sweep's run(s) for {which} failed (sweep.json has each error)")
     return (1 if failures else 0), sweep_record, [(combos[i], results[i]) for i in done]
+
+
+def resumed_of(state):
+    """A run's entry in sweep.json of a resumed sweep: how it continued (nothing for a fresh run)."""
+    return {"resumed": {"complete": "kept", "checkpoint": "from its checkpoint"}[state]} if state != "fresh" else {}
 
 
 def draw_grid(out, scene, params, combos, runs, rows, header, fixed, plt):
@@ -876,7 +974,9 @@ def sweep(scene, grid, fixed=None, jobs=2, out=None):
     (named with their units: interference_m, g_W/(m^2 K)), the key figures (first_contact_time_s,
     final_pressure_mean_Pa, ...), and `out`, the run's folder (absolute); attrs["out"] is the
     sweep's folder, attrs["figures"] its figures. When a run fails the others still run and are
-    published; then a SceneError names the failed runs (its `table` attribute holds the others')."""
+    published; then a SceneError names the failed runs (its `table` attribute holds the others').
+    fixed={"resume": 1, ...} continues the interrupted sweep in `out` (same grid and options): its
+    finished runs kept, those with a checkpoint (-checkpoint N) resumed, the others run."""
     # (a TERM or HUP anywhere in the sweep is said and passed on: between the checks' pool and the
     # runs' pool, each terminable() alone, Python's default ended the sweep without a word,
     # tests/signals_test.py, 1 run in 6)
@@ -887,16 +987,12 @@ def sweep(scene, grid, fixed=None, jobs=2, out=None):
         if not isinstance(jobs, int) or isinstance(jobs, bool) or jobs < 1:
             raise SceneError(f"jobs = {jobs!r}: a whole number of runs at a time >= 1")
         out = driver.folder(out if out is not None else os.path.join("results", "sweeps", "-".join([scene] + params)))
-        check_runs(out, scene, params, grid, fixed, jobs)
-        try:
-            results_io.claim(out, "sweep " + scene)
-        except results_io.ResultsError as e:
-            raise SceneError(str(e)) from None
+        states = take_folder(out, scene, params, grid, fixed, jobs)
         try:
             status, record, done = run_grid(out, scene, params, grid, fixed, jobs,
                                             record={"args": [w for k, v in fixed.items() for w in (f"-{k}", text_of(v))],
                                                     "options": {k: text_of(v) for k, v in fixed.items()}},
-                                            say=lambda *a, **k: None, warn=lambda line: None)
+                                            say=lambda *a, **k: None, warn=lambda line: None, states=states)
             if status == 0:
                 results_io.complete(out)
         except results_io.ResultsError as e:
