@@ -24,10 +24,22 @@ plugin/core/files.hpp).
    memory and names the limit (before: 100-230 MB wrote the results and never exited, in
    OpenBLAS's thread shutdown; 92-100 MB an exit 1 without an error line, a segmentation fault or
    an exec error called a bug). At least one limit fails and the largest completes, per scene.
+7. The results folder removed during the run (tests/hooks/folder-removed*.edp remove it at step 20):
+   the next write (an instant's fields, a frame, a checkpoint; sleeve-circular and sleeve-radial)
+   fails with exit 1 and one error line naming the missing folder (it ended in a segmentation
+   fault after the line, or FreeFEM's "Exec error" naming no cause). And the form that keeps a
+   failure there from crashing FreeFEM (edp/lib/output.idp, PartialPath), checked in every script:
+   no Partial or PartialVtu as a string's initializer, no call in a stream's argument.
+8. A folder's last complete run is kept whole while the next one runs: sleeve-radial (with its
+   default mesh-error companion in mesh-estimate/) completes, then a run stopped after step 30
+   (-stopafter) leaves previous-run/ holding every file and folder its manifest lists, the
+   companion's history.csv the same bytes (the companion was removed: previous-run/ lacked it);
+   a third run that completes leaves no previous-run/.
 Writes results/checks/faults.json.
 """
 import json
 import os
+import re
 import resource
 import shutil
 import signal
@@ -360,6 +372,61 @@ def shell_syntax(tmp, measured):
     measured["shell_syntax"] = {"exit": result.returncode, "mesh_recorded_exactly": mesh_recorded == mesh}
 
 
+def folder_removed(tmp, measured):
+    cases = [("tests/hooks/folder-removed.edp", ["-vtkevery", "0"], "fields-2-contact.csv"),
+             ("tests/hooks/folder-removed.edp", ["-vtkevery", "21"], "frames/step-000021.vtu"),
+             ("tests/hooks/folder-removed.edp", ["-vtkevery", "0", "-checkpoint", "10"], ".csv"),
+             ("tests/hooks/folder-removed-radial.edp", [], "fields-2-contact.csv")]
+    for k, (script, extra, named) in enumerate(cases):
+        out = os.path.join(tmp, f"removed-{k}")
+        result = subprocess.run([FF, script, "-steps", "300", "-quiet", "1", *extra, "-out", out], cwd=ROOT,
+                                capture_output=True, text=True, timeout=300)
+        lines = errors_of(result)
+        label = f"{os.path.basename(script)} {' '.join(extra)}".strip()
+        check(result.returncode == 1 and len(lines) == 1 and "is missing (removed while the run wrote" in lines[0]
+              and named in lines[0] and not os.path.exists(out),
+              f"{label}: the folder removed at step 20: exit {result.returncode} (1), one error line naming it "
+              f"({len(lines)}): {lines[:2]}")
+        measured[f"folder_removed {label}"] = {"exit": result.returncode, "errors": lines}
+    # The form, in every script (edp/lib/output.idp, PartialPath; its own definitions apart)
+    bad = []
+    for folder, _, names in os.walk(os.path.join(ROOT, "edp")):
+        for name in sorted(names):
+            if not name.endswith((".edp", ".idp")):
+                continue
+            path = os.path.join(folder, name)
+            for number, line in enumerate(open(path), 1):
+                code = line.split("//")[0]
+                if (re.search(r"\bstring\s+\w+\s*=[^;]*\bPartial(Vtu)?\(", code)
+                        or re.search(r"\bofstream\s+\w+\([^;]*\(", code)):
+                    bad.append(f"{os.path.relpath(path, ROOT)}:{number}")
+    check(not bad, f"no script opens a result file's stream on a call, or declares a string with Partial as its "
+          f"initializer (output.idp, PartialPath): {bad or 'none'}")
+
+
+def previous_run_whole(tmp, measured):
+    out = os.path.join(tmp, "previous-whole")
+    radial = [FF, "edp/scenes/sleeve-radial.edp", "-out", out]
+    first = subprocess.run(radial, cwd=ROOT, capture_output=True, text=True, timeout=300)
+    companion = os.path.join(out, "mesh-estimate", "history.csv")
+    kept = open(companion, "rb").read() if os.path.isfile(companion) else None
+    stopped = subprocess.run(radial + ["-stopafter", "30"], cwd=ROOT, capture_output=True, text=True, timeout=300)
+    previous = os.path.join(out, "previous-run")
+    with open(os.path.join(previous, ".sma-results")) as f:
+        listed = [ln.strip() for ln in f.read().splitlines()[2:] if ln.strip()]
+    missing = [e for e in listed if not os.path.exists(os.path.join(previous, e.rstrip("/")))]
+    again = os.path.join(previous, "mesh-estimate", "history.csv")
+    same = kept is not None and os.path.isfile(again) and open(again, "rb").read() == kept
+    check(first.returncode == 0 and stopped.returncode == 4 and "mesh-estimate/" in listed and not missing and same,
+          f"a complete run, then one stopped after step 30 (exit {first.returncode}, {stopped.returncode}): previous-run/ "
+          f"holds all {len(listed)} entries its manifest lists (missing: {missing or 'none'}), the companion's "
+          f"history.csv {'the same bytes' if same else 'CHANGED OR MISSING'}")
+    third = subprocess.run(radial, cwd=ROOT, capture_output=True, text=True, timeout=300)
+    check(third.returncode == 0 and not os.path.exists(previous),
+          f"the next complete run (exit {third.returncode}) removes previous-run/")
+    measured["previous_run_whole"] = {"listed": listed, "missing": missing, "companion_same": same}
+
+
 def main():
     measured = {}
     with tempfile.TemporaryDirectory(prefix="faults-") as tmp:
@@ -371,6 +438,8 @@ def main():
         foreign(tmp, measured)
         second_scene(tmp, measured)
         shell_syntax(tmp, measured)
+        folder_removed(tmp, measured)
+        previous_run_whole(tmp, measured)
         memory(tmp, measured)
     record("faults", {"test": "faults", **measured})
     finish()

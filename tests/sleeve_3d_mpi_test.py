@@ -343,7 +343,7 @@ def main():
             for name in ("history.csv", "contact-final.csv")}
     said = [line for line in stop_output.splitlines() if line.strip()]
     check(stop_code == 4 and said[-1:] == ["sleeve-3d: stopped after step 50 (-stopafter 50; -resume 1 continues from the "
-                                          "last checkpoint)"] and resume_code == 0 and all(same.values())
+                                          "checkpoint of step 40)"] and resume_code == 0 and all(same.values())
           and summary_of(parted).get("resumed_from_step") == 40,
           f"checkpoints on 2 ranks: stopped after step 50 (exit {stop_code}, 4; its last line {said[-1:]}), resumed "
           f"(exit {resume_code}) from step {summary_of(parted).get('resumed_from_step') if resume_code == 0 else None} "

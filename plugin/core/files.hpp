@@ -386,10 +386,29 @@ struct RecordedResults {
   void clear() { entries.clear(), folders_read.clear(); }
 };
 
+// "" when the file `path` can be written where it is: its folder exists and takes new files; else
+// why not, naming both. A folder removed or made read-only while a run writes into it made
+// FreeFEM's own open fail, "Exec error : Error opening file", exit 8, which names no cause.
+inline std::string unwritable_folder(const std::string& path) {
+  fs::path dir = fs::path(path).parent_path();
+  if (dir.empty()) dir = ".";
+  std::error_code ec;
+  const auto kind = fs::status(dir, ec).type();
+  if (kind == fs::file_type::not_found)
+    return "cannot write " + path + ": its folder " + dir.string() + " is missing (removed while the run wrote "
+           "into it?)";
+  if (!ec && kind != fs::file_type::directory) return "cannot write " + path + ": " + dir.string() + " is not a folder";
+  if (access(dir.c_str(), W_OK | X_OK) != 0)
+    return "cannot write " + path + ": its folder " + dir.string() + " takes no new file (" + std::strerror(errno) +
+           ": made read-only while the run wrote into it?)";
+  return {};
+}
+
 // Records that the suite writes `path`: its name goes into the manifest of the nearest results
 // folder above it (nothing when there is none: a verification record, a documentation figure).
 // Another process's additions since this one read the manifest may be listed a second time,
-// which a reader ignores (repeats are allowed).
+// which a reader ignores (repeats are allowed). A file whose folder cannot take it is refused
+// (unwritable_folder): the caller is about to write it.
 inline std::string record_result(const std::string& path, RecordedResults& known) {
   std::string file = path;
   bool folder = false;  // a path ending in '/' is a folder, listed as `name/`
@@ -397,6 +416,8 @@ inline std::string record_result(const std::string& path, RecordedResults& known
     file.pop_back();
     folder = true;
   }
+  if (!folder)
+    if (auto e = unwritable_folder(file); !e.empty()) return e;
   fs::path dir;
   std::string rel;
   if (!manifest_of(file, dir, rel)) return {};

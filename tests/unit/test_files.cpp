@@ -360,6 +360,27 @@ TEST(Files, ARunThatDoesNotCompleteLeavesTheLastCompleteRunWhole) {
   EXPECT_TRUE(fs::exists(other + "/previous-run/mine.txt"));
 }
 
+// A result file whose folder is gone (or is a file) is refused naming it, before FreeFEM's open
+// fails with an "Exec error" that names no cause.
+TEST(Files, RecordingAFileInAMissingFolderNamesTheFolder) {
+  Scratch t;
+  const std::string d = t / "out";
+  files::RecordedResults known;
+  ASSERT_EQ(files::claim_results(d, "sleeve-radial", getpid()), "");
+  ASSERT_EQ(files::record_result(d + "/history.csv", known), "");
+  std::string error = files::record_result(d + "/frames/step-1.vtu", known);
+  EXPECT_NE(error.find("its folder " + d + "/frames is missing"), std::string::npos) << error;
+  touch(d + "/notes");
+  error = files::record_result(d + "/notes/x.csv", known);
+  EXPECT_NE(error.find(d + "/notes is not a folder"), std::string::npos) << error;
+  files::release_results(d, getpid());
+  fs::remove_all(d);
+  // (an entry recorded before is refused too: the folder went after it)
+  error = files::record_result(d + "/history.csv", known);
+  EXPECT_NE(error.find("its folder " + d + " is missing"), std::string::npos) << error;
+  EXPECT_EQ(files::unwritable_folder("relative-name.csv"), "");  // (the current folder)
+}
+
 TEST(Files, EndsWithTellsACompleteVtuFromACutOne) {
   Scratch t;
   touch(t / "whole.vtu", "<VTKFile>\n</VTKFile>\n");
