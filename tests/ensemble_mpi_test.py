@@ -14,6 +14,8 @@ the coarse mesh, 150 steps, 4 seeds.
   seeds give four different T0 samples and four different node peak ratios.
 - A child's failure stops the ensemble loudly: seed 2 (rank 1) killed while it runs gives a non-zero exit,
   an error naming seed 2 and its log, no other seed blamed, and no seeds.csv or summary.json.
+- A child stopped by a signal (TERM to seed 2's FreeFEM) stops the ensemble: an error naming seed 2
+  and the signal, no other seed started on its rank (seed 4), nothing published.
 Writes results/checks/ensemble_mpi.json.
 """
 import filecmp
@@ -199,6 +201,28 @@ def main():
           "the failure report is kept in failed.txt")
     leftovers = [f for f in ("seeds.csv", "summary.json") if os.path.exists(os.path.join(out, f))]
     check(not leftovers, f"no ensemble result written after the failure (found: {leftovers or 'none'})")
+    # A child stopped by a signal (a job manager's TERM, a Ctrl-C that reaches the seeds' runs): the
+    # ensemble is being stopped, not a seed that failed: its rank stops at once, naming the seed and
+    # the signal, and starts no other seed (it went on to seed 4, a seed or two more ran before
+    # mpiexec's kill).
+    out = os.path.join(TEST_RESULTS, "ensemble-stopped")
+    shutil.rmtree(out, ignore_errors=True)
+    driver = subprocess.Popen(["ff-mpirun", "-np", "2", DRIVER, "-v", "0", *longer, "-out", out],
+                              cwd=ROOT, env=environment(), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    victim = f"FreeFem.* -seed 2 .*{out}/seed-2"
+    stopped, deadline = False, time.time() + 120
+    while not stopped and driver.poll() is None and time.time() < deadline:
+        for pid in subprocess.run(["pgrep", "-f", victim], capture_output=True, text=True).stdout.split():
+            os.kill(int(pid), signal.SIGTERM)
+            stopped = True
+        time.sleep(0.01)
+    stdout, stderr = driver.communicate(timeout=300)
+    said = [ln for ln in (stdout + stderr).splitlines() if "stopped by a signal" in ln]
+    started = sorted(int(n[len("seed-"):-len(".log")]) for n in os.listdir(out) if n.endswith(".log"))
+    check(stopped and driver.returncode != 0 and said and "seed 2's run was stopped by a signal (exit 143)" in said[0]
+          and 4 not in started and not os.path.exists(os.path.join(out, "summary.json")),
+          f"seed 2's run stopped by TERM: exit {driver.returncode}, said {said[:1]}, seeds started {started} "
+          "(not 4: its rank started no other seed), nothing published")
     # Counts beyond reason refused up front, naming the option (-seeds 1e9 segfaulted both ranks
     # allocating the per-seed table; -seed0 2147483647 -seeds 2 failed after its first seed)
     for extra, said in ((["-seeds", "1000000000"], "-seeds 1000000000 must be in [1, 999999]"),

@@ -13,9 +13,12 @@
 #include <sys/types.h>
 #include <sys/wait.h>
 
+#include <signal.h>
 #include <stdlib.h>
 
 #include <cerrno>
+#include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -36,6 +39,21 @@ inline int run_shell(const std::string& command) {
   if (WIFEXITED(status)) return WEXITSTATUS(status);
   if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
   return -1;
+}
+
+// Ends the process by the signal `sig` (its default action, whatever handler it had), after the
+// standard streams are flushed: a process whose child was stopped by a signal stops as it did, so
+// that its own parent sees a stop, not a failure (an MPI rank: mpiexec stops the other ranks, where
+// an exit would wait in MPI_Finalize while they wait in their next collective call, for ever).
+// Returns only if the signal did not end it (then the caller exits).
+inline void stop_by_signal(int sig) {
+  std::fflush(nullptr);
+  std::signal(sig, SIG_DFL);
+  sigset_t unblocked;
+  sigemptyset(&unblocked);
+  sigaddset(&unblocked, sig);
+  sigprocmask(SIG_UNBLOCK, &unblocked, nullptr);
+  raise(sig);
 }
 
 // Where temporary folders go: $TMPDIR when it names an existing directory by an absolute path (the

@@ -128,6 +128,8 @@
 //   long RunCommand(string command)   /bin/sh -c command, waited for: its exit status (128 + the
 //       signal that ended it, -1 if it did not start); unlike exec() (system()), the caller keeps
 //       its INT and QUIT meanwhile (plugin/core/process.hpp)
+//   long StopBySignal(long n)          ends the process by signal n (its default action; after
+//       flushing cout and cerr): a stop passed on as a stop (plugin/core/process.hpp)
 //   string TemporaryDirectory(string prefix)   a new empty $TMPDIR/<prefix>XXXXXX (else /tmp) ("" on failure), removed
 //                                              with its contents when the process exits
 //   long PlaneStressAtCentroids(mesh Th, matrix Dx, matrix Dy, real[] u, real[] [lambda, mu],

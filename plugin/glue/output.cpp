@@ -273,6 +273,12 @@ long ProbeRowWrite(std::ostream* const& f, KN<double>* const& head, KN<double>* 
 string* JsonQuote(Stack stack, string* const& text) { return NewString(stack, sma::json::quote(*text)); }
 string* ShellQuote(Stack stack, string* const& text) { return NewString(stack, sma::files::shell_quote(*text)); }
 long RunCommand(string* const& command) { return sma::process::run_shell(*command); }
+long StopBySignal(long const& sig) {
+  std::cout.flush();
+  std::cerr.flush();
+  sma::process::stop_by_signal((int)sig);
+  std::exit(128 + (int)sig);  // (not reached when the signal ends the process, as it does)
+}
 // The scratch folders this process made: removed at exit with what they hold, however the script
 // ends (a refusal's exit(1) after the folder was made left it in /tmp), as the claimed folders' locks.
 std::vector<std::string>& TemporaryFolders() {
@@ -330,6 +336,7 @@ void AddOutputFunctions() {
   Global.Add("MeshFileError", "(", new OneOperator2s_<S, S, double>(MeshFileError));
   Global.Add("ShellQuote", "(", new OneOperator1s_<S, S>(ShellQuote));
   Global.Add("RunCommand", "(", new OneOperator1_<long, S>(RunCommand));
+  Global.Add("StopBySignal", "(", new OneOperator1_<long, long>(StopBySignal));
   Global.Add("TemporaryDirectory", "(", new OneOperator1s_<S, S>(TemporaryDirectory));
 }
 

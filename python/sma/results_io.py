@@ -115,6 +115,30 @@ def read_json(path):
     return value
 
 
+def read_vtu(path):
+    """The mesh and fields of a scene's VTU file (sma.vtu.read_vtu: a Fields), or a ResultsError
+    naming the file: missing, cut short (a run stopped while writing it) or damaged. The plot tools
+    read VTU files here, never through VTK's reader, which prints its own complaint and hands back
+    an empty grid (a traceback further on)."""
+    from .errors import SceneError
+    from .vtu import read_vtu as read
+    try:
+        return read(path)
+    except SceneError as e:
+        raise ResultsError(str(e)) from None
+
+
+def read_pvd(path):
+    """[(time in s, absolute path of the VTU)] of a fields.pvd (sma.vtu.read_pvd), or a ResultsError
+    naming the file."""
+    from .errors import SceneError
+    from .vtu import read_pvd as read
+    try:
+        return read(path)
+    except SceneError as e:
+        raise ResultsError(str(e)) from None
+
+
 def read_csv(path, skip_comment=True, text_columns=()):
     """{column: [float]} of a CSV with a header line (`#` lines skipped): every row must have the
     header's number of fields, every field a finite or nan number (those of `text_columns`, labels

@@ -47,21 +47,9 @@ def mesh_fields(vtu):
     and nodal temperature, or None when the VTU is absent."""
     if not os.path.isfile(vtu):
         return None
-    import vtk  # only here: the other figures need no VTK
-    from vtk.util.numpy_support import vtk_to_numpy
-    reader = vtk.vtkXMLUnstructuredGridReader()
-    reader.SetFileName(vtu)
-    reader.Update()
-    grid = reader.GetOutput()
-    points = vtk_to_numpy(grid.GetPoints().GetData())
-    cells = [[grid.GetCell(i).GetPointId(k) for k in range(3)] for i in range(grid.GetNumberOfCells())
-             if grid.GetCellType(i) == 5]  # VTK_TRIANGLE
-    if not cells or len(cells) != grid.GetNumberOfCells():
-        return None
-    tri = mtri.Triangulation(points[:, 0] * 1e3, points[:, 1] * 1e3, cells)
-    cd, pd = grid.GetCellData(), grid.GetPointData()
-    return tri, {name: vtk_to_numpy(cd.GetArray(name)) for name in ("sigma_rr", "phase")}, \
-        vtk_to_numpy(pd.GetArray("temperature"))
+    fields = results_io.read_vtu(vtu)  # (a cut or damaged VTU: an error line naming it)
+    tri = mtri.Triangulation(fields.points[:, 0] * 1e3, fields.points[:, 1] * 1e3, fields.triangles)
+    return tri, {name: fields.cell_data[name] for name in ("sigma_rr", "phase")}, fields.point_data["temperature"]
 
 
 def fields(outdir, summary):

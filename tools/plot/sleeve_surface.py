@@ -61,8 +61,7 @@ def displacement_states(outdir, summary):
     pvd = os.path.join(outdir, "fields.pvd")
     if not os.path.exists(pvd):
         return [(0.0, f, f[len("fields-"):-len(".vtu")]) for f in sorted(instants)]
-    import xml.etree.ElementTree as ET
-    listed = [(float(d.get("timestep")), d.get("file")) for d in ET.parse(pvd).getroot().iter("DataSet")]
+    listed = [(t, os.path.relpath(f, outdir)) for t, f in results_io.read_pvd(pvd)]
     t_zoom = zoom_end(summary, read_csv(os.path.join(outdir, "history.csv")), max(t for t, _ in listed))
     return [(t, f, f[len("fields-"):-len(".vtu")] if f in instants else "") for t, f in listed
             if f in instants or t <= t_zoom]
@@ -73,14 +72,8 @@ def inner_surface(outdir, summary, vtu):
     displacement u_r (m), the u_r that reaches the pipe along the ray (m) and the gap to the pipe
     n.u + initial gap (m, >= 0, 0 where touching), from contact-final.csv (the nodes, 12 digits)
     and the VTU file `vtu` of outdir (the nodal displacement)."""
-    import vtk  # only here: the other figures need no VTK
-    from vtk.util.numpy_support import vtk_to_numpy
-    reader = vtk.vtkXMLUnstructuredGridReader()
-    reader.SetFileName(os.path.join(outdir, vtu))
-    reader.Update()
-    grid = reader.GetOutput()
-    points = vtk_to_numpy(grid.GetPoints().GetData())
-    disp = vtk_to_numpy(grid.GetPointData().GetArray("displacement"))
+    fields = results_io.read_vtu(os.path.join(outdir, vtu))  # (a cut or damaged VTU: an error line naming it)
+    points, disp = fields.points, fields.point_data["displacement"]
     par = summary["parameters"]
     nodes = read_csv(os.path.join(outdir, "contact-final.csv"))
     out = []
