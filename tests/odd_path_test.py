@@ -54,6 +54,11 @@ def main():
     check(run.returncode == 0 and os.path.isfile(os.path.join(out, "summary.json")),
           f"tools/ff edp/scenes/sleeve-radial.edp there: exit {run.returncode}"
           + ("" if run.returncode == 0 else f": {(run.stdout + run.stderr)[-600:]}"))
+    # The preloads (its out-of-memory guard, its clock) loaded there too: the loader splits
+    # LD_PRELOAD at spaces, and named by their paths neither was (40 "cannot be preloaded" lines).
+    complaints = [ln for ln in (run.stdout + run.stderr).splitlines() if "cannot be preloaded" in ln]
+    check(not complaints, f"the launcher's preloads load under the path with a space ({len(complaints)} loader "
+          f"complaints{': ' + complaints[0] if complaints else ''})")
     injected = [os.path.join(d, f) for d, _, fs in os.walk(base) for f in fs if f == "INJECTED"]
     injected += [p for p in (os.path.join(ROOT, "INJECTED"), os.path.join(ROOT, "plugin", "build", "INJECTED"))
                  if os.path.exists(p)]

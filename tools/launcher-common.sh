@@ -4,6 +4,33 @@
 # check stops the launcher (exit 3) naming the fix. No program is started where the shell itself
 # does (each costs a run milliseconds).
 
+# The launchers preload ROOT/plugin/build/fastclock.so and oomguard.so (LD_PRELOAD), whose list
+# the loader splits at spaces and colons: in a checkout whose path holds a space it loaded neither
+# (40 lines of "cannot be preloaded ... ignored"), and the run went on without its out-of-memory
+# guard. There the libraries are named bare and found through LD_LIBRARY_PATH (split at colons and
+# semicolons only); a path with a colon or a semicolon is refused (exit 3), naming it.
+# require_preloadable ROOT: that refusal.
+require_preloadable() {
+  case "$1" in
+    *[:\;]*)
+      echo "error: the checkout's path '$1' holds a colon or a semicolon, which the loader's library lists cannot name (tools/ff preloads plugin/build/oomguard.so, its out-of-memory guard): clone or link the checkout to a path without them" >&2
+      exit 3 ;;
+  esac
+}
+# preload_entry ROOT LIB: sets $entry, LD_PRELOAD's name of ROOT/plugin/build/LIB (bare where ROOT
+# holds a space, its folder then put first on LD_LIBRARY_PATH).
+preload_entry() {
+  case "$1" in
+    *[[:space:]]*)
+      entry=$2
+      case ":${LD_LIBRARY_PATH:-}:" in
+        *":$1/plugin/build:"*) ;;
+        *) export LD_LIBRARY_PATH="$1/plugin/build${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" ;;
+      esac ;;
+    *) entry="$1/plugin/build/$2" ;;
+  esac
+}
+
 # require_sma_plugin ROOT: the SMA plugin ($SMA_PLUGIN, else ROOT/plugin/build/sma.so) built, a
 # whole shared library, newer than its sources, of the scripts' version; sets $plugin and
 # $plugin_dir (its folder, for FF_LOADPATH).
@@ -160,7 +187,9 @@ untraced='
   { if (trailer($0)) { held[++n] = $0; next }
     for (i = 1; i <= n; i++) print held[i]
     n = 0
-    print
+    # (an error line on standard error, as the launchers print theirs: FreeFEM prints the cerr of
+    # a script on its standard output, and a run with its output sent away or closed lost the line)
+    if ($0 ~ /^error: /) { fflush(); print > "/dev/stderr"; fflush("/dev/stderr") } else print
     if (said != "" && $0 ~ /^error: /) { print >> said; fflush(said) }
     fflush() }
   END { clean = 0
@@ -197,7 +226,11 @@ run_filtered() {
   shift
   mkfifo "$fifo"
   exec 4<>"$fifo"
-  env --ignore-signal=INT,TERM,HUP,QUIT $line_awk "$untraced" < "$fifo" 4>&- &
+  # (the filter drains the FIFO to its end even when its own output fails: a reader that went away,
+  # `| head -1`, or a closed standard output killed awk, and the run, its output no longer read,
+  # blocked for ever once the FIFO's 64 KB were full)
+  env --ignore-signal=INT,TERM,HUP,QUIT sh -c "$line_awk \"\$1\"; exec cat > /dev/null" filter "$untraced" \
+    < "$fifo" 4>&- &
   filter=$!
   child=""
   stopped=""
@@ -206,7 +239,9 @@ run_filtered() {
   trap 'stopped=143; [ -z "$child" ] || kill -TERM "$child" 2>/dev/null' TERM
   trap 'stopped=130; [ -z "$child" ] || kill -TERM "$child" 2>/dev/null' INT
   trap 'stopped=129; [ -z "$child" ] || kill -TERM "$child" 2>/dev/null' HUP
-  exec 3<&0
+  # (a closed standard input is /dev/null to the child: `exec 3<&0` on it stopped the launcher
+  # with "Bad file descriptor", exit 2, no error line)
+  if [ -e /dev/fd/0 ]; then exec 3<&0; else exec 3</dev/null; fi
   "$@" <&3 3<&- 4>&- > "$fifo" &
   child=$!
   exec 3<&-
