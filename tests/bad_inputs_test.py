@@ -5,7 +5,7 @@ Reads the table of docs/errors.md and the cases listed under it (so that the doc
 test cannot drift), runs each row's command from the repository root with $R = the root and $T =
 a fresh scratch directory, and
 asserts for each: the exit code of the table; one line starting with "error:" in its output
-(stderr for tools/ff and make, stdout for FreeFEM's cerr), matching the row's pattern; the run
+(on stderr: tools/ff moves a script's there too, tests/launch_test.py), matching the row's pattern; the run
 over in under 20 s of processor time (it must stop before the time loop; processor time, which
 the machine's load does not stretch); and that what a finished earlier run left
 in $T/out (its marker and a summary.json) is still there byte for byte: every check comes before

@@ -19,6 +19,12 @@ actually wrote: the last -out among the words (getARGV takes the last), else DEF
 command gets it as its last argument. With -help among ARGS the script only lists its options and
 nothing is drawn. Exit: the run's exit code, else the plot's.
 """
+import signal
+
+# A Ctrl-C during the imports ends this tool without a traceback (children.install, below,
+# then passes it on to the runs and says so).
+signal.signal(signal.SIGINT, signal.SIG_DFL)
+
 import os
 import re
 import shlex

@@ -9,7 +9,8 @@ PARAM is an option name without its dash (g, mu, steps); a value may be negative
 options after `--` go to every run; so do those in the environment variable NAME with --env-args
 (make sweep's ARGS: split into words like a shell's, quotes grouping, but never run by one, so a
 `;` or `$(...)` in it is a character). --jobs N runs min(N, cores, values) at a time (default:
-the cores). Writes DIR (default results/sweeps/<scene>-<param>):
+the cores). Writes DIR (default results/sweeps/<scene>-<param> of the checkout; a relative DIR is
+the current folder's):
   <param>=<value>/     each run's own results folder
   table.csv            one row per finished value: the summary's key figures (first contact and
                        austenite: step, time, inner temperature; final and peak mean pressure;
@@ -166,7 +167,11 @@ def main(argv):
             driver.check_option(scene, p)
         fixed = extra_options(scene, params, args["extra"])
         engine.check_grid(scene, grid, fixed)  # the values, then their types
-        out = args["out"] or os.path.join(driver.ROOT, "results", "sweeps", "-".join([scene] + params))
+        # (a relative --out is the caller's, as on any command line: taken as it was, the sweep's
+        # claim and table went there while its runs, whose folders the driver takes from the
+        # checkout, went under the checkout: two halves, exit 0)
+        out = os.path.abspath(args["out"]) if args["out"] else os.path.join(driver.ROOT, "results", "sweeps",
+                                                                             "-".join([scene] + params))
         # every run checked by the scene itself before the folder is taken (its earlier results
         # would be gone by the time a run refused its options); then taken as a scene takes its
         # -out: a folder holding anything its manifest does not list is refused untouched; an
@@ -175,9 +180,13 @@ def main(argv):
     except (BadInput, driver.SceneError) as e:
         print(f"error: {e}", file=sys.stderr)
         return 2
+    # (the console's lines through results_io.console: a reader that went away, `| head -1`, made
+    # the next line's print raise, which stopped the runs and was reported as the results' write)
+    say, complain = results_io.console(sys.stdout), results_io.console(sys.stderr)
     try:
         status, _, _ = engine.run_grid(out, scene, params, grid, fixed, args["jobs"],
-                                       record={"args": args["extra"], "options": fixed}, states=states)
+                                       record={"args": args["extra"], "options": fixed}, states=states,
+                                       say=say, warn=complain)
         if status == 0:  # every run ended well: the earlier sweep, kept in previous-run/, goes
             results_io.complete(out)
         return status

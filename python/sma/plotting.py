@@ -12,7 +12,8 @@ def save(fig, path, dpi, tight=False):
     import matplotlib.pyplot as plt
     partial = path[:-len(".png")] + ".partial.png"
     results_io.record(path)
-    fig.savefig(partial, dpi=dpi, **({"bbox_inches": "tight"} if tight else {}))
+    with results_io.naming(partial):
+        fig.savefig(partial, dpi=dpi, **({"bbox_inches": "tight"} if tight else {}))
     plt.close(fig)
     os.replace(partial, path)
 

@@ -7,6 +7,7 @@ files.hpp, through plugin/build/sma-results: one implementation).
     from sma.results_io import ResultsError, guard, read_csv, read_json
     guard(main)   # runs main(); a ResultsError prints "error: ..." and exits 1
 """
+import contextlib
 import csv
 import json
 import math
@@ -45,6 +46,41 @@ def claim(folder, scene):
     calls complete()) and a manifest of `scene` started. The lock
     goes with release(folder) or this process's end (a later run finds it stale)."""
     results_tool("claim", folder, scene, str(os.getpid()))
+
+
+@contextlib.contextmanager
+def naming(path):
+    """Gives the file `path` to an OSError raised inside that names none (a write that fails as the
+    file is flushed or closed: a full disk, a file-size limit), so that the message names it."""
+    try:
+        yield
+    except OSError as e:
+        if e.filename is None:
+            raise OSError(e.errno, e.strerror or str(e), path) from None
+        raise
+
+
+def console(stream):
+    """A print to `stream` that stops printing, never failing, once a write to it fails (a reader
+    that went away, `| head -1`; a closed or full stream): the caller's work goes on. The stream's
+    descriptor is then pointed at /dev/null, so that Python's own flush at exit says nothing."""
+    broken = []
+
+    def say(*args, **kwargs):
+        if broken:
+            return
+        try:
+            print(*args, file=stream, **kwargs)
+            stream.flush()
+        except (OSError, ValueError):  # (ValueError: a closed file object)
+            broken.append(True)
+            try:
+                null = os.open(os.devnull, os.O_WRONLY)
+                os.dup2(null, stream.fileno())
+                os.close(null)
+            except (OSError, ValueError):
+                pass
+    return say
 
 
 def resume(folder, scene, patterns):

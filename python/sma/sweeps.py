@@ -330,10 +330,11 @@ def table_rows(params, combos, runs):
 def write_table(path, header, rows):
     """table.csv (listed in the folder's manifest, written under a temporary name); None is empty."""
     results_io.record(path)
-    with open(path + ".partial", "w", newline="") as f:
-        w = csv.writer(f, lineterminator="\n")
-        w.writerow(header)
-        w.writerows([["" if x is None else x for x in row] for row in rows])
+    with results_io.naming(path + ".partial"):
+        with open(path + ".partial", "w", newline="") as f:
+            w = csv.writer(f, lineterminator="\n")
+            w.writerow(header)
+            w.writerows([["" if x is None else x for x in row] for row in rows])
     os.replace(path + ".partial", path)
 
 
@@ -525,8 +526,9 @@ def design_chart(out, scene, param, values, runs, plt, unit="", fixed=None):
 def write_json(path, record):
     """A JSON record of the folder (listed in its manifest, written under a temporary name)."""
     results_io.record(path)
-    with open(path + ".partial", "w") as f:
-        json.dump(record, f, indent=2, allow_nan=False)
+    with results_io.naming(path + ".partial"):
+        with open(path + ".partial", "w") as f:
+            json.dump(record, f, indent=2, allow_nan=False)
     os.replace(path + ".partial", path)
 
 

@@ -4,6 +4,12 @@
 Usage: tools/plot/plot_free-ring.py [results/free-ring] [other-run-dir label ...]
 Extra (directory, label) pairs overlay the mean temperature of other runs (e.g. -latent 0).
 """
+import signal
+
+# A Ctrl-C ends this tool at once, without a traceback, even during its imports (the process
+# that started it, make's, says it was stopped).
+signal.signal(signal.SIGINT, signal.SIG_DFL)
+
 import os
 import sys
 

@@ -14,6 +14,12 @@ with -pullout the whole length, its end face z = 0 held), from results/sleeve-ax
                          normal force against the pipe's displacement (mm)
 Usage: tools/plot/plot_sleeve-axisymmetric.py results/sleeve-axisymmetric
 """
+import signal
+
+# A Ctrl-C ends this tool at once, without a traceback, even during its imports (the process
+# that started it, make's, says it was stopped).
+signal.signal(signal.SIGINT, signal.SIG_DFL)
+
 import os
 import sys
 
