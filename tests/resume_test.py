@@ -45,6 +45,9 @@ CASES = [("sleeve-circular", ["-mesh", "meshes/sleeve-coarse.msh"], 50, 130),
          ("tests/hooks/heat-ramp.edp", [], 50, 130),
          # the moving layers' mesh, moved before the checkpoint and after it
          ("sleeve-circular", ["-movinglayers", "1"], 10, 125),
+         # the contact's own heat transfer: the heat condition switches and is solved again (its
+         # counts in summary.json, which a resumed run counted from 0 again)
+         ("sleeve-radial", ["-gcontact", "2000"], 50, 130),
          # stopped after its time loop (during its mesh-error companion, its summary): the per-step
          # files are published, longer than the checkpoint records
          ("sleeve-circular", ["-mesh", "meshes/sleeve-coarse.msh"], 50, 130, "after its loop")]
