@@ -15,6 +15,10 @@ finishes before the stop):
     whole; sweep.json says which; every run's history.csv equals A's byte for byte, and the
     table A's but for the timing columns;
   - sma.sweep(..., fixed={"resume": 1}) on the finished sweep keeps all three and returns the table;
+  - C, stopped as B: a changed checkpoint (its continued CSV edited) and a run of other options put
+    by hand into a run's folder: the resumed sweep keeps its finished run and runs both others
+    again, a note each (the plan records each finished run's summary.json: a run it did not record
+    is not kept);
   - -resume 1 in a folder that holds no sweep is refused (exit 2).
 Before, -resume 1 went to every run as it was: the sweep took its folder afresh first, which
 removed the stopped runs' checkpoints, and every run then failed finding none.
@@ -106,6 +110,34 @@ def main():
     check(len(frame) == 3 and all(runs[v].get("resumed") == "kept" for v in VALUES)
           and read(os.path.join(b, "steps=100", "summary.json")) == kept,
           f"sma.sweep with resume=1 on the finished sweep keeps its {len(frame)} runs and returns the table")
+
+    # C: stopped as B, then the 600-step run's continued CSV changed (its checkpoint cannot be
+    # continued) and a run of other options put by hand into the 700-step run's folder: the resumed
+    # sweep keeps its finished run, starts both others again with a note each (it refused the whole
+    # sweep, advising a fresh one that deleted the finished run; it kept the hand-made run, whose
+    # 700 steps at -g 600 joined the table as this sweep's)
+    c = os.path.join(tmp, "C")
+    sweep(c, "-stopafter", "150")
+    partial = os.path.join(c, "steps=600", "history.csv.partial")
+    with open(partial) as f:
+        lines = f.read().split("\n")
+    lines[2] = lines[2].replace(",", " ,", 1)
+    with open(partial, "w") as f:
+        f.write("\n".join(lines))
+    os.remove(os.path.join(c, "steps=700", "checkpoint.txt"))
+    hand = subprocess.run([os.path.join(ROOT, "tools", "ff"), "edp/scenes/sleeve-radial.edp", "-steps", "700", "-g", "600",
+                           "-quiet", "1", "-out", os.path.join(c, "steps=700")], cwd=ROOT, capture_output=True, text=True)
+    kept_c = read(os.path.join(c, "steps=100", "summary.json"))
+    rc = sweep(c, "-resume", "1")
+    said = [ln for ln in rc.stderr.splitlines() if ln.startswith("note: ")]
+    again = [v for v in ("600", "700") if read(os.path.join(a, f"steps={v}", "history.csv"))
+             == read(os.path.join(c, f"steps={v}", "history.csv"))]
+    check(hand.returncode == 0 and rc.returncode == 0 and read(os.path.join(c, "steps=100", "summary.json")) == kept_c
+          and any("-steps 600: its checkpoint cannot be continued" in ln for ln in said)
+          and any("-steps 700: its summary.json is not one this sweep recorded" in ln for ln in said)
+          and again == ["600", "700"],
+          f"a changed checkpoint and a hand-made run: the resumed sweep exits {rc.returncode}, keeps its finished run, "
+          f"runs both others again (equal to the uninterrupted sweep's: {again}), saying so: {[ln[:90] for ln in said]}")
 
     none = sweep(os.path.join(tmp, "empty"), "-resume", "1")
     check(none.returncode == 2 and "holds no sweep to resume" in none.stderr,

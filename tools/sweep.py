@@ -176,7 +176,7 @@ def main(argv):
         # would be gone by the time a run refused its options); then taken as a scene takes its
         # -out: a folder holding anything its manifest does not list is refused untouched; an
         # earlier sweep's runs, table and figures go first (with -resume 1 its runs stay)
-        states = engine.take_folder(out, scene, params, grid, fixed, args["jobs"])
+        states, notes = engine.take_folder(out, scene, params, grid, fixed, args["jobs"])
     except (BadInput, driver.SceneError) as e:
         print(f"error: {e}", file=sys.stderr)
         return 2
@@ -185,7 +185,7 @@ def main(argv):
     say, complain = results_io.console(sys.stdout), results_io.console(sys.stderr)
     try:
         status, _, _ = engine.run_grid(out, scene, params, grid, fixed, args["jobs"],
-                                       record={"args": args["extra"], "options": fixed}, states=states,
+                                       record={"args": args["extra"], "options": fixed}, states=states, notes=notes,
                                        say=say, warn=complain)
         if status == 0:  # every run ended well: the earlier sweep, kept in previous-run/, goes
             results_io.complete(out)

@@ -23,6 +23,7 @@ written): a value it refuses stops the sweep before the folder is taken. A run t
 import concurrent.futures
 import contextlib
 import csv
+import hashlib
 import itertools
 import json
 import math
@@ -650,14 +651,36 @@ def sweep_plan(scene, params, grid, fixed):
             "options": {k: text_of(v) for k, v in sorted(fixed.items()) if k not in PLAN_FREE}}
 
 
-def run_state(folder):
-    """"complete" (its run published summary.json: the folder's mark of completion), "checkpoint"
-    (a checkpoint to resume from) or "fresh"."""
+def summary_digest(folder):
+    """The SHA-256 of a run's summary.json ("" without one): the plan's record of a finished run."""
+    path = os.path.join(folder, "summary.json")
+    if not os.path.isfile(path):
+        return ""
+    with open(path, "rb") as f:
+        return hashlib.sha256(f.read()).hexdigest()
+
+
+def run_state(folder, finished):
+    """"complete" (its run published the summary.json the sweep recorded as it finished: `finished`,
+    the plan's {folder name: digest}), "checkpoint" (a checkpoint to resume from) or "fresh"; and
+    why a finished-looking run is not kept ("" otherwise). A complete run the sweep did not record
+    (put there by hand, or finished as the sweep was stopped) runs again: kept, a run of other
+    options would have joined the table under this sweep's."""
     if os.path.isfile(os.path.join(folder, "checkpoint.txt")):
-        return "checkpoint"
+        return "checkpoint", ""
     if os.path.isfile(os.path.join(folder, ".sma-complete")) and os.path.isfile(os.path.join(folder, "summary.json")):
-        return "complete"
-    return "fresh"
+        if finished.get(os.path.basename(folder)) == summary_digest(folder):
+            return "complete", ""
+        return "fresh", "its summary.json is not one this sweep recorded (a run put there, or finished as the sweep stopped)"
+    return "fresh", ""
+
+
+def record_finished(out, folder):
+    """Adds the run in `folder`, just finished, to the plan's record (its summary.json's digest)."""
+    path = os.path.join(out, PLAN)
+    plan = results_io.read_json(path)
+    plan.setdefault("finished", {})[os.path.basename(folder)] = summary_digest(folder)
+    write_json(path, plan)
 
 
 def run_options(fixed, state):
@@ -671,8 +694,10 @@ def run_options(fixed, state):
 def take_folder(out, scene, params, grid, fixed, jobs):
     """Checks every run, then takes `out` for the sweep (results_io.claim: its earlier results go;
     resumed, -resume 1: only its table, figures and sweep.json, its runs kept) and writes the plan.
-    Returns each run's state (run_state; all "fresh" unless resumed). Raises SceneError naming the
-    refused run, a plan that differs from the interrupted sweep's, or a folder that cannot be taken."""
+    Returns each run's state (run_state; all "fresh" unless resumed) and the notes of a resumed
+    sweep: the runs that start again, and why (a finished-looking run it did not record, a
+    checkpoint the scene refuses to continue). Raises SceneError naming the refused run, a plan
+    that differs from the interrupted sweep's, or a folder that cannot be taken."""
     plan = sweep_plan(scene, params, grid, fixed)
     _, combos, _, _ = grid_runs(params, grid, jobs)
     folders = [run_folder(out, params, c) for c in combos]
@@ -686,14 +711,17 @@ def take_folder(out, scene, params, grid, fixed, jobs):
         except results_io.ResultsError as e:
             raise SceneError(f"-resume 1: {e}") from None
         for key in plan:
-            if before.get(key) != plan[key]:
+            if key != "finished" and before.get(key) != plan[key]:
                 raise SceneError(f"-resume 1: the sweep in {out} ran {key} {json.dumps(before.get(key))}, this one "
                                  f"{json.dumps(plan[key])}: resume with the interrupted sweep's scene, values and "
                                  f"options (only {', '.join('-' + f for f in PLAN_FREE)} may differ)")
-        states = [run_state(f) for f in folders]
+        plan["finished"] = before.get("finished", {}) if isinstance(before.get("finished"), dict) else {}
+        found = [run_state(f, plan["finished"]) for f in folders]
+        states = [s for s, _ in found]
+        notes = [f"{run_label(params, c)}: {why}: it runs again" for c, (_, why) in zip(combos, found) if why]
     else:
-        states = ["fresh"] * len(folders)
-    check_runs(out, scene, params, grid, fixed, jobs, states)
+        states, notes = ["fresh"] * len(folders), []
+    notes += check_runs(out, scene, params, grid, fixed, jobs, states)
     try:
         if resuming(fixed):
             results_io.resume(out, "sweep " + scene, SWEEP_OUTPUTS)
@@ -706,22 +734,33 @@ def take_folder(out, scene, params, grid, fixed, jobs):
                 raise SceneError(f"cannot write {os.path.join(out, PLAN)}: {e.strerror or e}") from None
     except results_io.ResultsError as e:
         raise SceneError(str(e)) from None
-    return states
+    return states, notes
 
 
 def check_runs(out, scene, params, grid, fixed, jobs, states=None):
     """Checks every run of the grid (driver.check: the scene's check-only mode, nothing written),
     `jobs` at a time, before the caller takes `out`: a run that refused its options only after
     the sweep's folder was taken came after an earlier sweep's results there were deleted
-    (ARGS='-gpipe -5'). A resumed sweep's finished runs (`states`) are not run, nor checked.
-    Raises SceneError naming the first refused run's values and its error."""
+    (ARGS='-gpipe -5'). A resumed sweep's finished runs (`states`) are not run, nor checked; a run
+    whose checkpoint the scene refuses to continue (changed since, damaged) starts again: its state
+    becomes "fresh" (in `states`) and a note says why (the list returned). Before, the whole sweep
+    was refused with the run's own advice, "run again without -resume", which then deleted the
+    sweep's finished runs. Raises SceneError naming the first refused run's values and its error."""
     _, combos, values, jobs = grid_runs(params, grid, jobs)
-    states = states or ["fresh"] * len(combos)
+    states = states if states is not None else ["fresh"] * len(combos)
+    notes = {}
 
     def one(i):
+        folder, given = run_folder(out, params, combos[i]), dict(zip(params, values[i]))
+        if states[i] == "checkpoint":
+            try:
+                driver.check(scene, folder, **run_options(fixed, states[i]), **given)
+                return
+            except SceneError as e:
+                notes[i] = f"{run_label(params, combos[i])}: its checkpoint cannot be continued ({e}): it runs again"
+                states[i] = "fresh"
         if states[i] != "complete":
-            driver.check(scene, run_folder(out, params, combos[i]), **run_options(fixed, states[i]),
-                         **dict(zip(params, values[i])))
+            driver.check(scene, folder, **run_options(fixed, states[i]), **given)
     with stoppable_pool(jobs) as pool:
         futures = [pool.submit(one, i) for i in range(len(combos))]
         for i, future in enumerate(futures):  # in the grid's order: the first refused run is named
@@ -729,16 +768,18 @@ def check_runs(out, scene, params, grid, fixed, jobs, states=None):
                 future.result()
             except SceneError as e:
                 raise SceneError(f"{run_label(params, combos[i])}: {e}") from None
+    return [notes[i] for i in sorted(notes)]
 
 
-def run_grid(out, scene, params, grid, fixed, jobs, record=None, say=print, warn=None, states=None):
+def run_grid(out, scene, params, grid, fixed, jobs, record=None, say=print, warn=None, states=None, notes=()):
     """Runs every combination of the values of `grid` ({param: [values]}, checked by check_grid)
     into its folder of `out` (taken by the caller), then publishes table.csv, the figures and
     sweep.json. `grid`'s values go to the scene as given; their texts (text_of) name the folders
     and fill the table. Returns (exit status 0, or 1 when a run failed, the record written to
     sweep.json, the finished runs as [(combo texts, Results)]). `say` and `warn` print the
-    progress and the errors (the command line's console). `states` (take_folder): a resumed
-    sweep's finished runs are kept, those with a checkpoint resume."""
+    progress and the errors (the command line's console). `states` and `notes` (take_folder): a
+    resumed sweep's finished runs are kept, those with a checkpoint resume; each run that finishes
+    is recorded in the plan (record_finished), which a later resume keeps it by."""
     import sys
     warn = warn or (lambda line: print(line, file=sys.stderr, flush=True))
     texts, combos, values, jobs = grid_runs(params, grid, jobs)
@@ -750,6 +791,8 @@ def run_grid(out, scene, params, grid, fixed, jobs, record=None, say=print, warn
     if resuming(fixed):
         say(f"sweep: -resume 1: {states.count('complete')} run(s) finished before are kept, "
             f"{states.count('checkpoint')} resume from their checkpoint, {states.count('fresh')} run", flush=True)
+    for note in notes:
+        warn(f"note: {note}")
 
     def one(i):  # the run's notes and warnings named by its values
         if states[i] == "complete":
@@ -764,6 +807,8 @@ def run_grid(out, scene, params, grid, fixed, jobs, record=None, say=print, warn
             i = futures[future]
             try:
                 future.result()
+                if states[i] != "complete":
+                    record_finished(out, folders[i])
                 say(f"sweep: {label[i]} " + ("kept (finished before)" if states[i] == "complete" else "done"), flush=True)
             except SceneError as e:
                 failures[i] = str(e)
@@ -807,7 +852,7 @@ def run_grid(out, scene, params, grid, fixed, jobs, record=None, say=print, warn
             "table": "table.csv", "table_columns": header,
             "figures": [os.path.basename(p) for p in written],
             "curves_coinciding_within_0.1_percent": [g for g in groups if len(g) > 1],
-            **({"note": note} if note else {})}
+            **({"note": note} if note else {}), **({"resume_notes": list(notes)} if notes else {})}
     else:
         sweep_record = {
             "scene": scene, "params": params, "param_meanings": {p: options[p]["meaning"] for p in params},
@@ -818,7 +863,8 @@ def run_grid(out, scene, params, grid, fixed, jobs, record=None, say=print, warn
                       **({"error": failures[i]} if i in failures else {}), **resumed_of(states[i])}
                      for i, c in enumerate(combos)],
             "table": "table.csv", "table_columns": header,
-            "figures": [os.path.basename(p) for p in written], **({"note": note} if note else {})}
+            "figures": [os.path.basename(p) for p in written], **({"note": note} if note else {}),
+            **({"resume_notes": list(notes)} if notes else {})}
     write_json(os.path.join(out, "sweep.json"), sweep_record)
     say(f"sweep: {len(done)} of {len(combos)} runs; table.csv{', figures' if written else ''} "
         f"and sweep.json in {out}/")
@@ -989,9 +1035,9 @@ def sweep(scene, grid, fixed=None, jobs=2, out=None):
         if not isinstance(jobs, int) or isinstance(jobs, bool) or jobs < 1:
             raise SceneError(f"jobs = {jobs!r}: a whole number of runs at a time >= 1")
         out = driver.folder(out if out is not None else os.path.join("results", "sweeps", "-".join([scene] + params)))
-        states = take_folder(out, scene, params, grid, fixed, jobs)
+        states, notes = take_folder(out, scene, params, grid, fixed, jobs)
         try:
-            status, record, done = run_grid(out, scene, params, grid, fixed, jobs,
+            status, record, done = run_grid(out, scene, params, grid, fixed, jobs, notes=notes,
                                             record={"args": [w for k, v in fixed.items() for w in (f"-{k}", text_of(v))],
                                                     "options": {k: text_of(v) for k, v in fixed.items()}},
                                             say=lambda *a, **k: None, warn=lambda line: None, states=states)
