@@ -11,6 +11,8 @@
   runs went under the checkout, the table beside the caller: two halves, exit 0).
 - A sweep whose console goes away (`| head -1`) or is full (`> /dev/full`): its runs complete and
   it exits 0 (a failed print stopped the runs and was reported as "writing its results failed").
+- A TERM as a run ends, after it published its results: its line says the results are whole (it
+  said "nothing published ... continues with -resume 1", the checkpoint gone).
 - A plot tool interrupted (INT) while it starts: it ends by the signal, without a traceback.
 Writes results/checks/launch.json.
 """
@@ -84,6 +86,29 @@ def main():
             check(code == 0 and all(runs) and os.path.isfile(os.path.join(out, "table.csv")),
                   f"a sweep whose console {name}: exit {code}, runs published {runs}, table "
                   f"{os.path.isfile(os.path.join(out, 'table.csv'))} {err.strip()[-200:]}")
+
+        # A TERM as the run ends, after it published its results: whatever the moment, the line never
+        # says "nothing published" of a folder that holds the run's summary.json (it did, and that
+        # -resume 1 continues a run whose checkpoint was gone). Three tries, each TERM sent as soon
+        # as summary.json appears (a window of about 10 ms: a try that misses it ends with exit 0).
+        told = []
+        for k in range(3):
+            out = os.path.join(tmp, f"ending-{k}")
+            run_end = subprocess.Popen([FF, "edp/scenes/sleeve-circular.edp", "-mesh", "meshes/sleeve-coarse.msh",
+                                        "-steps", "20000", "-quiet", "1", "-checkpoint", "5000", "-meshestimate", "0",
+                                        "-out", out], cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+            deadline = time.time() + 120
+            while not published(out) and run_end.poll() is None and time.time() < deadline:
+                time.sleep(0.001)
+            run_end.send_signal(signal.SIGTERM)
+            _, err = run_end.communicate(timeout=60)
+            line = [ln for ln in err.splitlines() if ln.startswith("error:")]
+            told.append((run_end.returncode, line[0][:160] if line else ""))
+            check(published(out) and (run_end.returncode == 0 or (line and "after its run had completed" in line[0]
+                                                                  and "nothing published" not in line[0])),
+                  f"TERM as the run ends ({k + 1}): exit {run_end.returncode}, summary.json {published(out)}, "
+                  f"said {line[:1]}")
+        measured["term_as_it_ends"] = told
 
         # the plot tool started, then interrupted while it imports its libraries
         plot = subprocess.Popen([PYTHON, os.path.join(ROOT, "tools", "plot", "plot_sleeve-radial.py"), run],

@@ -208,6 +208,30 @@ else
   line_awk="awk"
 fi
 
+# published_since MARKER ARGS...: sets $published to the run's results folder (its -out among ARGS,
+# else results/<the script's name>) when the run completed there after MARKER was made (its
+# summary.json newer, the folder's mark of completion there), else "". A signal that arrives as a
+# run ends, after it published its results, was said to have left "nothing published ... continues
+# with -resume 1", while the results were whole and the checkpoint gone (a window of about 10 ms,
+# 70-110 ms on MPI ranks).
+published_since() {
+  marker=$1
+  shift
+  out=""
+  name=""
+  previous=""
+  for word in "$@"; do
+    [ "$previous" = "-out" ] && out=$word
+    case "$word" in
+      *.edp) name=${word##*/}; name=${name%.edp} ;;
+    esac
+    previous=$word
+  done
+  [ -n "$out" ] || out="results/$name"
+  published=""
+  if [ -f "$out/.sma-complete" ] && [ "$out/summary.json" -nt "$marker" ]; then published=$out; fi
+}
+
 # run_filtered FIFO COMMAND...: COMMAND as a child this shell waits for, its standard input this
 # script's (an asynchronous command's would be /dev/null), its standard output through the filter
 # $untraced by way of the FIFO made at FIFO (so that $child is COMMAND itself). A TERM, INT or HUP
