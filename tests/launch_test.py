@@ -13,6 +13,8 @@
   it exits 0 (a failed print stopped the runs and was reported as "writing its results failed").
 - A TERM as a run ends, after it published its results: its line says the results are whole (it
   said "nothing published ... continues with -resume 1", the checkpoint gone).
+- On MPI ranks, a rank killed outright is said (the launcher exited 137 without a word), and the
+  launcher killed outright takes mpiexec and the ranks with it (they ran on to their end).
 - A plot tool interrupted (INT) while it starts: it ends by the signal, without a traceback.
 Writes results/checks/launch.json.
 """
@@ -109,6 +111,33 @@ def main():
                   f"TERM as the run ends ({k + 1}): exit {run_end.returncode}, summary.json {published(out)}, "
                   f"said {line[:1]}")
         measured["term_as_it_ends"] = told
+
+        # On MPI ranks: a rank killed outright is said (tools/ff-mpi exited 137 without a word), and
+        # the launcher killed outright takes mpiexec and its ranks with it (they ran on to their end).
+        env = dict(os.environ, SMA_ROOT=ROOT)
+        mpi = [os.path.join(ROOT, "tools", "ff-mpi"), "2", "edp/mpi/sleeve-3d.edp", "-nr", "2", "-nt", "4", "-nz", "4",
+               "-steps", "20000", "-tol", "0", "-quiet", "1", "-meshestimate", "0"]
+        for who in ("a rank", "the launcher"):
+            out = os.path.join(tmp, "mpi-" + who.split()[-1])
+            job = subprocess.Popen(mpi + ["-out", out], cwd=ROOT, env=env, stdout=subprocess.PIPE,
+                                   stderr=subprocess.PIPE, text=True, start_new_session=True)
+            pattern = "FreeFem[+][+]-mpi .*-out " + out if who == "a rank" else "tools/ff-mpi 2 .*-out " + out
+            deadline, victims = time.time() + 60, []
+            while not victims and job.poll() is None and time.time() < deadline:
+                time.sleep(0.5 if not os.path.isdir(out) else 1.0)
+                victims = subprocess.run(["pgrep", "-f", pattern], capture_output=True, text=True).stdout.split()
+            if victims:
+                os.kill(int(victims[0]), signal.SIGKILL)
+            _, err = job.communicate(timeout=60)
+            time.sleep(2)
+            left = subprocess.run(["pgrep", "-f", "-out " + out], capture_output=True, text=True).stdout.split()
+            lines = [ln for ln in err.splitlines() if ln.startswith("error:")]
+            said = who == "the launcher" or (lines and "a rank died of signal SIGKILL" in lines[0])
+            check(bool(victims) and said and not left,
+                  f"sleeve-3d on 2 ranks, {who} killed outright: {'said ' + str(lines[:1]) if who == 'a rank' else ''} "
+                  f"processes left running: {len(left)}")
+            for pid in left:
+                os.kill(int(pid), signal.SIGKILL)
 
         # the plot tool started, then interrupted while it imports its libraries
         plot = subprocess.Popen([PYTHON, os.path.join(ROOT, "tools", "plot", "plot_sleeve-radial.py"), run],
