@@ -198,6 +198,11 @@ def main():
     errors = [ln for ln in output.splitlines() if ln.startswith("error:")]
     check(code == 1 and len(errors) == 1 and "plot_sleeve-radial.py" in errors[0] and "Traceback" not in output,
           f"plot_sleeve.py on a sleeve-radial run: exit {code}, {errors[:1]}")
+    # and the other way round (it failed on a key sleeve-circular does not write: "KeyError: 'nr'")
+    code, output = plot("plot_sleeve-radial.py", out)
+    errors = [ln for ln in output.splitlines() if ln.startswith("error:")]
+    check(code == 1 and len(errors) == 1 and "holds a run of sleeve-circular" in errors[0]
+          and "plot_sleeve.py" in errors[0], f"plot_sleeve-radial.py on a sleeve-circular run: exit {code}, {errors[:1]}")
 
     # ---- Damaged results: one error line naming the file, exit 1, never a traceback ----
     damaged = os.path.join(TEST_RESULTS, "plots-damaged")

@@ -175,6 +175,23 @@ def read_pvd(path):
         raise ResultsError(str(e)) from None
 
 
+def read_summary(outdir, tool):
+    """summary.json of the run in `outdir`, for the plot tool `tool` (its path: tools/plot/plot_<x>.py).
+    A run whose figures another tool draws (make run's rule: the scene's own plot_<scene>.py, else
+    plot_sleeve.py for a sleeve-* scene) is refused naming that tool: the tool read on and failed
+    on a key the other scene does not write ("KeyError: 'nr' ... an edited or foreign summary.json?")."""
+    summary = read_json(os.path.join(outdir, "summary.json"))
+    scene = summary.get("scene")
+    if isinstance(scene, str):
+        own = f"plot_{scene}.py"
+        if not os.path.isfile(os.path.join(ROOT, "tools", "plot", own)):
+            own = "plot_sleeve.py" if scene.startswith("sleeve-") else ""
+        if own and own != os.path.basename(tool):
+            raise ResultsError(f"{outdir} holds a run of {scene}, whose figures are tools/plot/{own}'s "
+                               "(make run draws them)")
+    return summary
+
+
 def read_csv(path, skip_comment=True, text_columns=()):
     """{column: [float]} of a CSV with a header line (`#` lines skipped): every row must have the
     header's number of fields, every field a finite or nan number (those of `text_columns`, labels

@@ -71,7 +71,7 @@ def convergence(outdir, meshes):
 
 def main():
     outdir = sys.argv[1] if len(sys.argv) > 1 else "results/beam"
-    summary = results_io.read_json(os.path.join(outdir, "summary.json"))
+    summary = results_io.read_summary(outdir, __file__)
     for mesh in summary["meshes"]:
         phase_map(outdir, mesh)
     convergence(outdir, summary["meshes"])

@@ -70,7 +70,7 @@ def bend(outdir, summary):
 
 def main():
     outdir = sys.argv[1] if len(sys.argv) > 1 else "results/sleeve-3d"
-    summary = results_io.read_json(os.path.join(outdir, "summary.json"))
+    summary = results_io.read_summary(outdir, __file__)
     axisymmetric.force_temperature(outdir, summary)
     axisymmetric.bore_pressure(outdir, summary)
     bend(outdir, summary)

@@ -145,7 +145,7 @@ def pullout(outdir, summary):
 
 def main():
     outdir = sys.argv[1] if len(sys.argv) > 1 else "results/sleeve-axisymmetric"
-    summary = results_io.read_json(os.path.join(outdir, "summary.json"))
+    summary = results_io.read_summary(outdir, __file__)
     force_temperature(outdir, summary)
     bore_pressure(outdir, summary)
     pullout(outdir, summary)

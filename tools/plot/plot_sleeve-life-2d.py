@@ -70,7 +70,7 @@ def pressure_points(outdir, summary, h, pts):
 
 def main():
     outdir = sys.argv[1] if len(sys.argv) > 1 else "results/sleeve-life-2d"
-    summary = results_io.read_json(os.path.join(outdir, "summary.json"))
+    summary = results_io.read_summary(outdir, __file__)
     h = read_csv(os.path.join(outdir, "history.csv"))
     pts = read_csv(os.path.join(outdir, "points.csv"))
     life_radial.pressure_temperature(outdir, summary, h)

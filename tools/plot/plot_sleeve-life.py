@@ -103,7 +103,7 @@ def life(outdir, summary, h):
 
 def main():
     outdir = sys.argv[1] if len(sys.argv) > 1 else "results/sleeve-life"
-    summary = results_io.read_json(os.path.join(outdir, "summary.json"))
+    summary = results_io.read_summary(outdir, __file__)
     h = read_csv(os.path.join(outdir, "history.csv"))
     pressure_temperature(outdir, summary, h)
     life(outdir, summary, h)

@@ -100,7 +100,7 @@ def fields(outdir, summary):
 
 def main():
     outdir = sys.argv[1] if len(sys.argv) > 1 else "results/sleeve-radial"
-    summary = results_io.read_json(os.path.join(outdir, "summary.json"))
+    summary = results_io.read_summary(outdir, __file__)
     force_temperature(outdir, summary, sys.argv[2:])
     iterations(outdir, summary)
     fields(outdir, summary)
