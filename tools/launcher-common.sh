@@ -31,6 +31,20 @@ preload_entry() {
   esac
 }
 
+# require_umask: a umask that takes from the files' owner (umask 777, 0200) makes the run's own
+# folders and files unusable to it: under umask 777 the launcher failed in its scratch folder
+# ("cannot create .../pid: Permission denied", mkfifo), no error line. Refused (exit 3), naming it.
+require_umask() {
+  mask=$(umask)
+  case "$mask" in
+    0[0-7][0-7] | [0-7][0-7]) ;;  # (3 digits or fewer: the owner's digit is 0)
+    00[0-7][0-7]) ;;
+    *)
+      echo "error: the umask $mask takes permissions from the files' owner: the run could not use the folders and files it makes; set one that leaves the owner rwx (umask 022, 077)" >&2
+      exit 3 ;;
+  esac
+}
+
 # require_sma_plugin ROOT: the SMA plugin ($SMA_PLUGIN, else ROOT/plugin/build/sma.so) built, a
 # whole shared library, newer than its sources, of the scripts' version; sets $plugin and
 # $plugin_dir (its folder, for FF_LOADPATH).
