@@ -10,12 +10,9 @@ def save(fig, path, dpi, tight=False):
     listed first in the results folder's manifest; closes the figure. tight: crop to the drawn
     area (bbox_inches="tight"). Every plot tool's figures go through here."""
     import matplotlib.pyplot as plt
-    partial = path[:-len(".png")] + ".partial.png"
-    results_io.record(path)
-    with results_io.naming(partial):
+    with results_io.publishing(path, path[:-len(".png")] + ".partial.png") as partial:
         fig.savefig(partial, dpi=dpi, **({"bbox_inches": "tight"} if tight else {}))
-    plt.close(fig)
-    os.replace(partial, path)
+        plt.close(fig)
 
 
 def pyplot():

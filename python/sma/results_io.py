@@ -49,15 +49,21 @@ def claim(folder, scene):
 
 
 @contextlib.contextmanager
-def naming(path):
-    """Gives the file `path` to an OSError raised inside that names none (a write that fails as the
-    file is flushed or closed: a full disk, a file-size limit), so that the message names it."""
+def publishing(path, partial=None):
+    """Writes the result file `path` as the scenes do: listed first in its folder's manifest
+    (record), written under the temporary name `partial` (default path + ".partial"), which the
+    block gets, and renamed into place when the block ends well. An OSError inside that names no
+    file (a write that fails as the file is flushed or closed: a full disk, a file-size limit) is
+    given the temporary name, so that the message names it."""
+    partial = partial or path + ".partial"
+    record(path)
     try:
-        yield
+        yield partial
     except OSError as e:
         if e.filename is None:
-            raise OSError(e.errno, e.strerror or str(e), path) from None
+            raise OSError(e.errno, e.strerror or str(e), partial) from None
         raise
+    os.replace(partial, path)
 
 
 def console(stream):
@@ -151,28 +157,29 @@ def read_json(path):
     return value
 
 
+def _read_vtk_file(reader, path):
+    """reader(path) of sma.vtu, its SceneError (which names the file) raised as a ResultsError."""
+    from .errors import SceneError
+    try:
+        return reader(path)
+    except SceneError as e:
+        raise ResultsError(str(e)) from None
+
+
 def read_vtu(path):
     """The mesh and fields of a scene's VTU file (sma.vtu.read_vtu: a Fields), or a ResultsError
     naming the file: missing, cut short (a run stopped while writing it) or damaged. The plot tools
     read VTU files here, never through VTK's reader, which prints its own complaint and hands back
     an empty grid (a traceback further on)."""
-    from .errors import SceneError
-    from .vtu import read_vtu as read
-    try:
-        return read(path)
-    except SceneError as e:
-        raise ResultsError(str(e)) from None
+    from . import vtu
+    return _read_vtk_file(vtu.read_vtu, path)
 
 
 def read_pvd(path):
     """[(time in s, absolute path of the VTU)] of a fields.pvd (sma.vtu.read_pvd), or a ResultsError
     naming the file."""
-    from .errors import SceneError
-    from .vtu import read_pvd as read
-    try:
-        return read(path)
-    except SceneError as e:
-        raise ResultsError(str(e)) from None
+    from . import vtu
+    return _read_vtk_file(vtu.read_pvd, path)
 
 
 def read_summary(outdir, tool):

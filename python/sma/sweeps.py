@@ -330,13 +330,10 @@ def table_rows(params, combos, runs):
 
 def write_table(path, header, rows):
     """table.csv (listed in the folder's manifest, written under a temporary name); None is empty."""
-    results_io.record(path)
-    with results_io.naming(path + ".partial"):
-        with open(path + ".partial", "w", newline="") as f:
-            w = csv.writer(f, lineterminator="\n")
-            w.writerow(header)
-            w.writerows([["" if x is None else x for x in row] for row in rows])
-    os.replace(path + ".partial", path)
+    with results_io.publishing(path) as partial, open(partial, "w", newline="") as f:
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(header)
+        w.writerows([["" if x is None else x for x in row] for row in rows])
 
 
 def same_curve(a, b):
@@ -526,11 +523,8 @@ def design_chart(out, scene, param, values, runs, plt, unit="", fixed=None):
 
 def write_json(path, record):
     """A JSON record of the folder (listed in its manifest, written under a temporary name)."""
-    results_io.record(path)
-    with results_io.naming(path + ".partial"):
-        with open(path + ".partial", "w") as f:
-            json.dump(record, f, indent=2, allow_nan=False)
-    os.replace(path + ".partial", path)
+    with results_io.publishing(path) as partial, open(partial, "w") as f:
+        json.dump(record, f, indent=2, allow_nan=False)
 
 
 def text_of(value):
@@ -711,12 +705,12 @@ def take_folder(out, scene, params, grid, fixed, jobs):
         except results_io.ResultsError as e:
             raise SceneError(f"-resume 1: {e}") from None
         for key in plan:
-            if key != "finished" and before.get(key) != plan[key]:
+            if before.get(key) != plan[key]:
                 raise SceneError(f"-resume 1: the sweep in {out} ran {key} {json.dumps(before.get(key))}, this one "
                                  f"{json.dumps(plan[key])}: resume with the interrupted sweep's scene, values and "
                                  f"options (only {', '.join('-' + f for f in PLAN_FREE)} may differ)")
-        plan["finished"] = before.get("finished", {}) if isinstance(before.get("finished"), dict) else {}
-        found = [run_state(f, plan["finished"]) for f in folders]
+        finished = before.get("finished") if isinstance(before.get("finished"), dict) else {}
+        found = [run_state(f, finished) for f in folders]
         states = [s for s, _ in found]
         notes = [f"{run_label(params, c)}: {why}: it runs again" for c, (_, why) in zip(combos, found) if why]
     else:

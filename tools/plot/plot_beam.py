@@ -5,12 +5,7 @@ phase-<mesh>.png: phase zones, austenite grey, martensite 1 black, martensite 2 
 dc-convergence.png: relative displacement change per DC iteration, log scale, all meshes.
 Usage: tools/plot/plot_beam.py [results/beam]
 """
-import signal
-
-# A Ctrl-C ends this tool at once, without a traceback, even during its imports (the process
-# that started it, make's, says it was stopped).
-signal.signal(signal.SIGINT, signal.SIG_DFL)
-
+import quiet_interrupt  # noqa: F401  (first: a Ctrl-C ends this tool without a traceback)
 import os
 import sys
 

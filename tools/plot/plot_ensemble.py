@@ -7,12 +7,7 @@
                  final value; the 5/50/95 % quantiles of summary.json as lines
 Usage: tools/plot/plot_ensemble.py results/sleeve-random-ensemble
 """
-import signal
-
-# A Ctrl-C ends this tool at once, without a traceback, even during its imports (the process
-# that started it, make's, says it was stopped).
-signal.signal(signal.SIGINT, signal.SIG_DFL)
-
+import quiet_interrupt  # noqa: F401  (first: a Ctrl-C ends this tool without a traceback)
 import os
 import sys
 

@@ -4,12 +4,7 @@
 Usage: tools/plot/plot_free-ring.py [results/free-ring] [other-run-dir label ...]
 Extra (directory, label) pairs overlay the mean temperature of other runs (e.g. -latent 0).
 """
-import signal
-
-# A Ctrl-C ends this tool at once, without a traceback, even during its imports (the process
-# that started it, make's, says it was stopped).
-signal.signal(signal.SIGINT, signal.SIG_DFL)
-
+import quiet_interrupt  # noqa: F401  (first: a Ctrl-C ends this tool without a traceback)
 import os
 import sys
 

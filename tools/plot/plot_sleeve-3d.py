@@ -13,12 +13,7 @@ columns: the ring-averaged pressure per layer z in bore-*.csv), drawn by plot_sl
                          mu N, drawn by plot_sleeve-axisymmetric.py from the same pullout.csv columns
 Usage: tools/plot/plot_sleeve-3d.py results/sleeve-3d
 """
-import signal
-
-# A Ctrl-C ends this tool at once, without a traceback, even during its imports (the process
-# that started it, make's, says it was stopped).
-signal.signal(signal.SIGINT, signal.SIG_DFL)
-
+import quiet_interrupt  # noqa: F401  (first: a Ctrl-C ends this tool without a traceback)
 import importlib.util
 import os
 import sys

@@ -14,12 +14,7 @@ with -pullout the whole length, its end face z = 0 held), from results/sleeve-ax
                          normal force against the pipe's displacement (mm)
 Usage: tools/plot/plot_sleeve-axisymmetric.py results/sleeve-axisymmetric
 """
-import signal
-
-# A Ctrl-C ends this tool at once, without a traceback, even during its imports (the process
-# that started it, make's, says it was stopped).
-signal.signal(signal.SIGINT, signal.SIG_DFL)
-
+import quiet_interrupt  # noqa: F401  (first: a Ctrl-C ends this tool without a traceback)
 import os
 import sys
 

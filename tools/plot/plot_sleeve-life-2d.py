@@ -13,12 +13,7 @@ from results/sleeve-life-2d/:
   fields-<instant>.png      stress, temperature and phases at the three instants (plot_sleeve.py's)
 Usage: tools/plot/plot_sleeve-life-2d.py results/sleeve-life-2d
 """
-import signal
-
-# A Ctrl-C ends this tool at once, without a traceback, even during its imports (the process
-# that started it, make's, says it was stopped).
-signal.signal(signal.SIGINT, signal.SIG_DFL)
-
+import quiet_interrupt  # noqa: F401  (first: a Ctrl-C ends this tool without a traceback)
 import importlib
 import os
 import sys

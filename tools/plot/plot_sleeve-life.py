@@ -11,12 +11,7 @@ results/sleeve-life/:
   fields.png                radial profiles at the three instants (tools/plot/plot_sleeve-radial.py's)
 Usage: tools/plot/plot_sleeve-life.py results/sleeve-life
 """
-import signal
-
-# A Ctrl-C ends this tool at once, without a traceback, even during its imports (the process
-# that started it, make's, says it was stopped).
-signal.signal(signal.SIGINT, signal.SIG_DFL)
-
+import quiet_interrupt  # noqa: F401  (first: a Ctrl-C ends this tool without a traceback)
 import os
 import sys
 

@@ -12,12 +12,7 @@ results/sleeve-radial/:
                          (end of dilatation, during contact, end)
 Usage: tools/plot/plot_sleeve-radial.py results/sleeve-radial [other/history.csv ...]
 """
-import signal
-
-# A Ctrl-C ends this tool at once, without a traceback, even during its imports (the process
-# that started it, make's, says it was stopped).
-signal.signal(signal.SIGINT, signal.SIG_DFL)
-
+import quiet_interrupt  # noqa: F401  (first: a Ctrl-C ends this tool without a traceback)
 import os
 import sys
 

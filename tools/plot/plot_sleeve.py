@@ -17,12 +17,7 @@ The data files are in SI units (K, Pa, m, s); the pictures in degrees C, MPa, mm
 Prints each figure's curve labels (the legend) on stdout.
 Usage: tools/plot/plot_sleeve.py results/<scene>
 """
-import signal
-
-# A Ctrl-C ends this tool at once, without a traceback, even during its imports (the process
-# that started it, make's, says it was stopped).
-signal.signal(signal.SIGINT, signal.SIG_DFL)
-
+import quiet_interrupt  # noqa: F401  (first: a Ctrl-C ends this tool without a traceback)
 import os
 import sys
 

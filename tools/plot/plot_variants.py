@@ -8,12 +8,7 @@
 Usage: tools/plot/plot_variants.py [--only <variant>] [results/variants] [docs/variants]
   (--only: the one figure of that variant, e.g. into its results folder: make run SCENE=beam-p2)
 """
-import signal
-
-# A Ctrl-C ends this tool at once, without a traceback, even during its imports (the process
-# that started it, make's, says it was stopped).
-signal.signal(signal.SIGINT, signal.SIG_DFL)
-
+import quiet_interrupt  # noqa: F401  (first: a Ctrl-C ends this tool without a traceback)
 import os
 import sys
 
