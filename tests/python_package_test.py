@@ -334,7 +334,7 @@ def error_checks(tmp, r, f):
     refused_out = os.path.join(tmp, "refused")
     errors["refused value"] = error_of(lambda: sma.sweep("sleeve-radial", {"g": [500, -1]}, fixed={"steps": 30},
                                                          out=refused_out))
-    expected["refused value"] = "-g -1: sleeve-radial -steps 30 -g -1.0 is refused (exit 1): sleeve-radial: -g -1 must be in [0, 1e15]"
+    expected["refused value"] = "-g -1: sleeve-radial -steps 30 -g -1 is refused (exit 1): sleeve-radial: -g -1 must be in [0, 1e15]"
     # A run that fails in its time loop: the others are published, the error names the failed one.
     partial_out = os.path.join(tmp, "partial")
     try:

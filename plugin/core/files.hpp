@@ -58,13 +58,16 @@ inline std::string make_directory(const std::string& path) {
   std::error_code ec;
   fs::create_directories(path, ec);
   if (ec) {
-    // A symbolic link to a missing target on the way says "File exists": name the link instead.
-    for (fs::path p = fs::path(path); !p.empty(); p = p.parent_path()) {
-      std::error_code lec;
-      if (fs::is_symlink(fs::symlink_status(p, lec)) && !fs::exists(p, lec))
-        return "cannot create the directory " + path + ": " + p.string() + " is a symbolic link to " +
-               fs::read_symlink(p, lec).string() + ", which does not exist";
-      if (p == p.parent_path()) break;
+    // A symbolic link to a missing target on the way says "File exists", a loop of links "Too many
+    // levels of symbolic links": name the link instead.
+    for (fs::path p = fs::path(path); !p.empty() && p != p.parent_path(); p = p.parent_path()) {
+      std::error_code lec, sec;
+      if (!fs::is_symlink(fs::symlink_status(p, lec))) continue;
+      const std::string link = p.string() + " is a symbolic link to " + fs::read_symlink(p, lec).string();
+      const fs::file_status target = fs::status(p, sec);
+      if (sec == std::errc::too_many_symbolic_link_levels)
+        return "cannot create the directory " + path + ": " + link + ", a loop of links that leads back to itself";
+      if (target.type() == fs::file_type::not_found) return "cannot create the directory " + path + ": " + link + ", which does not exist";
     }
     return "cannot create the directory " + path + ": " + reason(ec);
   }

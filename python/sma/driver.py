@@ -126,12 +126,16 @@ def word(scene, name, value, ranks=None):
     scene's -help): an int takes a Python int (or a numeric string of one), a real a finite int or
     float (or such a string; a temperature's string may end in its unit, "20C" or "293.15K"), a
     string a str; True/False only for a switch (is_switch); None, lists
-    and other objects are refused, naming the option. Reals in full precision (repr)."""
+    and other objects are refused, naming the option. A number's text goes on as typed, a Python
+    int as itself, a float in full precision (repr)."""
     option = options(scene, ranks)[name]
     kind = option["type"]
 
+    typed = None  # a number given as text goes on as typed (an error line shows -g 250, not 250.0)
+
     def refuse(why):
-        raise SceneError(f"{scene}: -{name} = {value!r}: {why} (-{name} is {kind}: {option['meaning']})")
+        shown = repr(typed) if typed is not None else repr(value)
+        raise SceneError(f"{scene}: -{name} = {shown}: {why} (-{name} is {kind}: {option['meaning']})")
     if value is None or isinstance(value, (list, tuple, dict, set)):
         refuse("not a single value")
     if isinstance(value, (bool, np.bool_)):
@@ -153,17 +157,17 @@ def word(scene, name, value, ranks=None):
         # written, the scene reads it in kelvin (edp/lib/errors.idp KelvinWord).
         return value.strip()
     if isinstance(value, str):
-        text = value.strip()
+        typed = value.strip()
         pattern = r"[+-]?\d+\Z" if kind == "int" else r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?\Z"
-        if not re.match(pattern, text):
+        if not re.match(pattern, typed):
             refuse(f"not a whole {'integer' if kind == 'int' else 'number'}")
-        value = int(text) if kind == "int" else float(text)
+        value = int(typed) if kind == "int" else float(typed)
     if kind == "int":
         if not isinstance(value, numbers.Integral):
             refuse("an int option takes an integer")
         if not -2**31 <= int(value) < 2**31:
             refuse("outside FreeFEM's 32-bit int")
-        return str(int(value))
+        return typed or str(int(value))
     if kind == "real":
         if not isinstance(value, numbers.Real):
             refuse("a real option takes a finite number")
@@ -173,7 +177,9 @@ def word(scene, name, value, ranks=None):
             refuse("beyond a double")
         if not math.isfinite(number):
             refuse("a real option takes a finite number")
-        return repr(number)
+        if typed is None and isinstance(value, numbers.Integral):
+            typed = str(int(value))  # 250, as a reader wrote it: not 250.0
+        return typed or repr(number)
     refuse(f"an option of unknown type {kind!r}")
 
 

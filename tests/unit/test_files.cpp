@@ -63,6 +63,13 @@ TEST(Files, ErrorsNameThePath) {
               std::string::npos) << e;
   }
   EXPECT_FALSE(fs::exists(t / "gone"));
+  // A loop of links is named as one (it was called a link to a missing target).
+  fs::create_symlink(t / "loop-b", t / "loop-a");
+  fs::create_symlink(t / "loop-a", t / "loop-b");
+  for (const std::string& dir : {t / "loop-a", t / "loop-a" + "/sub"}) {
+    const std::string e = files::make_directory(dir);
+    EXPECT_NE(e.find(t / "loop-a" + " is a symbolic link to " + t / "loop-b" + ", a loop of links"), std::string::npos) << e;
+  }
 }
 
 TEST(Files, RemoveMatchingStaysInsideTheFolder) {
