@@ -223,7 +223,7 @@ def main():
                 refusals[f"{name}={value!r}"] = str(e)
         accepted = sma.command("sleeve-radial", os.path.join(tmp, "u"), quiet=True, steps="30", g=500)
         check(all(v.startswith(f"sleeve-radial: -{k.split('=')[0]} = ") for k, v in refusals.items())
-              and accepted[2:8] == ["-quiet", "1", "-steps", "30", "-g", "500.0"],
+              and accepted[2:8] == ["-quiet", "1", "-steps", "30", "-g", "500"],
               f"(d) option values checked against the scene's types: {len(refusals)} refused "
               f"(None, a list, True for a real, 3.5 and 2^40 for an int, nan, an int for a string); "
               f"quiet=True, steps='30', g=500 -> {' '.join(accepted[2:8])}")
@@ -247,7 +247,7 @@ def main():
         # sweep takes its folder, so nothing runs and nothing is made there.
         refused_out = os.path.join(tmp, "refused")
         refused = sweep_tool("sleeve-radial", "g", "500", "-1", "--out", refused_out, "--", "-steps", "30")
-        check(refused.returncode == 2 and "-g -1: sleeve-radial -steps 30 -g -1.0 is refused" in refused.stderr
+        check(refused.returncode == 2 and "-g -1: sleeve-radial -steps 30 -g -1 is refused" in refused.stderr
               and "sleeve-radial: -g -1 must be in [0, 1e15]" in refused.stderr and not os.path.exists(refused_out),
               f"a value the scene refuses (g = -1) stops the sweep before any run, its folder not made: "
               f"exit {refused.returncode}, {first_error(refused)[:150]}")
