@@ -10,7 +10,7 @@ at its defaults and with `-mu 0.2 -pullout 1e-3`, sleeve-circular-gvar (its aust
 at k = 1 and 0 MPa (the pressure after the cold hold; k = 2 MPa is the headers' run).
 
 The scenes' headers likewise (checklib.header_quotes; their step numbers are the fixed steps',
--tol 0; sleeve-circular's, sleeve-elliptic's and sleeve-offset's in tests/paper_scale_test.py, which
+-tol 0, sleeve-radial's contact and austenite the default's adaptive steps' beside them; sleeve-circular's, sleeve-elliptic's and sleeve-offset's in tests/paper_scale_test.py, which
 runs them): sleeve-radial's contact (temperature, time), Lamé's pressure, austenite's temperature
 and time, and -scale reduced's pressure and austenite temperature; sleeve-elliptic-friction's defaults (-tol 1e-3): its steps, non-uniformity
 and friction ratios; sleeve-life's defaults: the free ring's temperatures and width, the storage
@@ -41,15 +41,19 @@ def headers():
     phrases = {}
     fixed = ["-tol", "0"]
     radial = run("sleeve-radial", "header-radial", *fixed)
+    adaptive = run("sleeve-radial", "header-radial-default")  # (the Run line's: steps chosen by -tol 1e-3)
     reduced = run("sleeve-radial", "header-radial-reduced", "-scale", "reduced", *fixed)
-    if radial and reduced:
-        s, r = summary_of(radial), summary_of(reduced)
+    if radial and reduced and adaptive:
+        s, r, d = summary_of(radial), summary_of(reduced), summary_of(adaptive)
         t = {int(h["step"]): float(h["t"]) for h in rows(os.path.join(radial, "history.csv"))}
+        td = {int(h["step"]): float(h["t"]) for h in rows(os.path.join(adaptive, "history.csv"))}
         phrases["sleeve-radial"] = [
-            f"contact at {celsius(s['T_inner_first_contact']):.1f} C at the inner surface "
-            f"(t = {t[s['first_contact_step']]:.1f} s)",
+            f"contact at {celsius(d['T_inner_first_contact']):.1f} C at the inner surface "
+            f"(t = {td[d['first_contact_step']]:.1f} s: the end of the step that touches; 1000 fixed steps, -tol 0: "
+            f"{celsius(s['T_inner_first_contact']):.1f} C, t = {t[s['first_contact_step']]:.1f} s)",
             f"{s['final_pressure_mean'] / 1e6:.2f} MPa, once the whole ring is austenite "
-            f"({celsius(s['T_inner_austenite']):.1f} C, t = {t[s['austenite_step']]:.0f} s)",
+            f"({celsius(d['T_inner_austenite']):.1f} C, t = {td[d['austenite_step']]:.0f} s; -tol 0: "
+            f"{celsius(s['T_inner_austenite']):.1f} C)",
             f"({r['final_pressure_mean'] / 1e6:.2f} MPa, austenite at {celsius(r['T_inner_austenite']):.1f} C)"]
         header_quotes("edp/scenes/sleeve-radial.edp", phrases["sleeve-radial"])
     friction = run("sleeve-elliptic-friction", "header-elliptic-friction", "-vtkevery", "0")  # (its defaults: -tol 1e-3)
