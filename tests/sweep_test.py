@@ -313,7 +313,7 @@ def main():
         circle_out, shape_out = os.path.join(tmp, "circle"), os.path.join(tmp, "shape")
         reduced = ["-mesh", "meshes/sleeve-coarse.msh", "-steps", "200", "-scale", "reduced"]
         circle = sweep_tool("sleeve-circular", "interference", "55e-6", "60e-6", "--out", circle_out, "--", *reduced)
-        shape = sweep_tool("sleeve-superellipse", "p", "2.5", "--out", shape_out, "--", *reduced)
+        shape = sweep_tool("sleeve-superellipse", "p", "2.05", "--out", shape_out, "--", *reduced)
         circle_table = rows(os.path.join(circle_out, "table.csv")) if circle.returncode == 0 else []
         shape_table = rows(os.path.join(shape_out, "table.csv")) if shape.returncode == 0 else []
         geometry = sleeve_geometry()  # the mesh's ring; -interference moves its inner radius, its thickness kept
