@@ -15,8 +15,10 @@ runs them): sleeve-radial's contact (temperature, time), Lamé's pressure, auste
 and time, and -scale reduced's pressure and austenite temperature; sleeve-elliptic-friction's defaults (-tol 1e-3): its steps, non-uniformity
 and friction ratios; sleeve-life's defaults: the free ring's temperatures and width, the storage
 margin, the clearance, the clamping and the service; free-ring's dissipative loop (-dissipation 1e6:
-the ring's mean temperature before each transformation, the heat dissipated). Five more runs,
-about 5 s.
+the ring's mean temperature before each transformation, the heat dissipated); and numbers an audit
+found stale: sleeve-elliptic-friction's on/off axes (header and README), sleeve-axisymmetric's slip
+iterations with -mu 0.2 (default and -tol 0), sleeve-life-2d's circle at k = 1 MPa. Ten more runs,
+about 10 s.
 Writes results/checks/readme_numbers.json.
 """
 import os
@@ -26,7 +28,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from checklib import ROOT, celsius, check, finish, header_quotes, record, rows, run_scene_captured, summary_of  # noqa: E402
 
 sys.path.insert(0, os.path.join(ROOT, "tools", "docs"))
-from paper_scale_metrics import curve  # noqa: E402
+from paper_scale_metrics import curve, ellipse_metrics  # noqa: E402
 
 
 def run(scene, name, *args):
@@ -64,6 +66,28 @@ def headers():
             "in total", f"At the default -tol 1e-3: {s['n_steps']} steps, (max - min)/mean "
             f"{100 * s['final_pressure_non_uniformity']:.3f} %"]
         header_quotes("edp/scenes/sleeve-elliptic-friction.edp", phrases["sleeve-elliptic-friction"])
+    # numbers an audit found stale (each was typed once and the code moved): the on/off axes of
+    # sleeve-elliptic-friction, sleeve-axisymmetric's slip iterations, sleeve-life-2d's circle
+    onoff = run("sleeve-elliptic-friction", "header-elliptic-friction-onoff", "-phasemodel", "onoff", "-vtkevery", "0")
+    if onoff:
+        m = ellipse_metrics(onoff, 1.0)["major_over_minor"]
+        apart = f"the axes come out {abs(100 * m):.1f} % apart, the {'minor' if m < 0 else 'major'} one higher"
+        phrases["sleeve-elliptic-friction onoff"] = [f"-phasemodel onoff {apart}"]
+        header_quotes("edp/scenes/sleeve-elliptic-friction.edp", phrases["sleeve-elliptic-friction onoff"])
+        phrase = f"{abs(100 * m):.1f} % with `-phasemodel onoff` (the {'minor' if m < 0 else 'major'} axis higher"
+        check(phrase in " ".join(open(os.path.join(ROOT, "README.md"), encoding="utf-8").read().split()),
+              f"README quotes the on/off axes as the run gives them: '{phrase}'")
+    slip = run("sleeve-axisymmetric", "header-axisymmetric-mu", "-mu", "0.2", "-meshestimate", "0")
+    slip_fixed = run("sleeve-axisymmetric", "header-axisymmetric-mu-fixed", "-mu", "0.2", "-meshestimate", "0", *fixed)
+    if slip and slip_fixed:
+        phrases["sleeve-axisymmetric"] = [
+            f"up to {summary_of(slip)['slip_threshold_iterations_max']} slip-threshold iterations in a step "
+            f"({summary_of(slip_fixed)['slip_threshold_iterations_max']} with -tol 0)"]
+        header_quotes("edp/scenes/sleeve-axisymmetric.edp", phrases["sleeve-axisymmetric"])
+    circle = run("sleeve-life-2d", "header-life-2d-circle", "-dissipation", "1e6", "-pipeA", "0.0505", "-vtkevery", "0")
+    if circle:
+        phrases["sleeve-life-2d"] = [f"(a circle, -pipeA 0.0505: {summary_of(circle)['service_pressure_min'] / 1e6:.2f}, uniform)"]
+        header_quotes("edp/scenes/sleeve-life-2d.edp", phrases["sleeve-life-2d"])
     life = run("sleeve-life", "header-life")  # (its defaults: fixed steps)
     if life:
         s = summary_of(life)
