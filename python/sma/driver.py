@@ -159,7 +159,7 @@ def word(scene, name, value, ranks=None):
     if isinstance(value, str):
         typed = value.strip()
         pattern = r"[+-]?\d+\Z" if kind == "int" else r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?\Z"
-        if not re.match(pattern, typed):
+        if not re.match(pattern, typed, re.ASCII):  # (FreeFEM reads ASCII digits only: not "２５０")
             refuse(f"not a whole {'integer' if kind == 'int' else 'number'}")
         value = int(typed) if kind == "int" else float(typed)
     if kind == "int":
