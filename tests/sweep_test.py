@@ -57,6 +57,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from checklib import ROOT, check, finish, record, rows  # noqa: E402
 import sma_driver as sma  # noqa: E402  (checklib puts tools/ on the path)
 import sweep  # noqa: E402
+from sma.sweeps import text_of  # noqa: E402
 import lame  # noqa: E402  (tools/bench/oracles: Lame's closed forms, independent of the package)
 from sleeve_geometry import sleeve_geometry  # noqa: E402
 
@@ -215,17 +216,20 @@ def main():
         # One option coercion: types from the scene's -help; True/False only for a switch.
         refusals = {}
         for name, value in (("g", None), ("g", [300, 400]), ("g", True), ("steps", 3.5), ("steps", 2**40),
-                            ("g", float("nan")), ("phasemodel", 1)):
+                            ("g", float("nan")), ("phasemodel", 1), ("g", "1e-400"), ("g", "\uff12\uff15\uff10")):
             try:
                 sma.command("sleeve-radial", os.path.join(tmp, "u"), **{name: value})
                 refusals[f"{name}={value!r}"] = "accepted"
             except sma.SceneError as e:
                 refusals[f"{name}={value!r}"] = str(e)
         accepted = sma.command("sleeve-radial", os.path.join(tmp, "u"), quiet=True, steps="30", g=500)
+        # a text's surrounding spaces go from its folder's name as from the run's value (' 250' made "g= 250")
+        check(text_of(" 250 ") == "250", f"a swept text's folder name without its spaces: {text_of(' 250 ')!r}")
         check(all(v.startswith(f"sleeve-radial: -{k.split('=')[0]} = ") for k, v in refusals.items())
               and accepted[2:8] == ["-quiet", "1", "-steps", "30", "-g", "500"],
               f"(d) option values checked against the scene's types: {len(refusals)} refused "
-              f"(None, a list, True for a real, 3.5 and 2^40 for an int, nan, an int for a string); "
+              f"(None, a list, True for a real, 3.5 and 2^40 for an int, nan, an int for a string, 1e-400 that would run as 0, "
+              f"full-width digits); "
               f"quiet=True, steps='30', g=500 -> {' '.join(accepted[2:8])}")
         typo = make("SCENE=sleeve-radial", "PARAM=g", "VALUES=300", "ARGS=-stpes 30", f"OUT={os.path.join(tmp, 'z')}")
         check(typo.returncode != 0 and "no option -stpes (did you mean -steps" in typo.stderr,

@@ -177,6 +177,8 @@ def word(scene, name, value, ranks=None):
             refuse("beyond a double")
         if not math.isfinite(number):
             refuse("a real option takes a finite number")
+        if number == 0 and typed is not None and re.search(r"[1-9]", typed.lower().split("e")[0]):
+            refuse("below a double's smallest, it would run as 0")  # (1e-400: the run said g = 0)
         if typed is None and isinstance(value, numbers.Integral):
             typed = str(int(value))  # 250, as a reader wrote it: not 250.0
         return typed or repr(number)

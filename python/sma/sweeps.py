@@ -528,9 +528,10 @@ def write_json(path, record):
 
 
 def text_of(value):
-    """A parameter value as its folder and table show it: a string as given, a number as Python
-    writes it (5e-05, 500)."""
-    return value if isinstance(value, str) else repr(value.item() if isinstance(value, np.generic) else value)
+    """A parameter value as its folder and table show it: a string as given (without surrounding
+    spaces), a number as Python writes it (5e-05, 500)."""
+    # (a text's surrounding spaces go, as the run's value loses them: ' 250' made the folder "g= 250")
+    return value.strip() if isinstance(value, str) else repr(value.item() if isinstance(value, np.generic) else value)
 
 
 def run_folder(out, params, combo):
