@@ -179,9 +179,9 @@ def word(scene, name, value, ranks=None):
             refuse("a real option takes a finite number")
         if number == 0 and typed is not None and re.search(r"[1-9]", typed.lower().split("e")[0]):
             refuse("below a double's smallest, it would run as 0")  # (1e-400: the run said g = 0)
-        if typed is None and isinstance(value, numbers.Integral):
-            typed = str(int(value))  # 250, as a reader wrote it: not 250.0
-        return typed or repr(number)
+        if typed is not None:
+            return typed
+        return str(int(value)) if isinstance(value, numbers.Integral) else repr(number)  # (250, not 250.0)
     refuse(f"an option of unknown type {kind!r}")
 
 
